@@ -1,0 +1,10 @@
+#pragma once
+// Each `ncbridge` subcommand lives in its own file and registers itself here.
+namespace CLI { class App; }
+
+namespace ncbridge::cli {
+
+// Adds the subcommand to `app`; the callback it installs runs the command and sets the exit code.
+void add_canon_command(CLI::App& app, int& exit_code);
+
+}  // namespace ncbridge::cli

@@ -1,0 +1,170 @@
+#pragma once
+// NIST canonical machining functions (RS274/NGC v3, section 4; LinuxCNC canon.hh), as values.
+//
+// This is THE seam between the interpreter and everything downstream: the interpreter (any
+// dialect) emits a stream of ncbridge::canonical::Call into a Sink; the cc1_builder consumes it.
+// Names follow the canonical function names so a reader can look them up. Lengths are in the
+// units set by the latest USE_LENGTH_UNITS, angles in degrees, feed in units/min (G94),
+// as LinuxCNC's canon layer receives them. Coordinates are absolute in the canonical frame
+// (G5x + G92 + tool length offsets applied, as the interpreter hands them to the machine).
+//
+// The wire form is proto/canonical.proto (see canonical/proto_codec.hpp).
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace ncbridge::canonical {
+
+// Where a call came from in the user's program.
+struct Source {
+  std::uint32_t file = 0;       // index into the stream's file table (Sink::source_file)
+  std::uint32_t line = 0;       // 1-based line of the block; 0 = made by the interpreter itself
+  std::int64_t n_number = -1;   // the block's N word, -1 when it has none
+};
+
+// For calls produced by a canned cycle (G73, G81..G89): which cycle made them, with what.
+// All lengths in the canonical frame and current units, like the calls themselves.
+struct CycleTag {
+  std::uint32_t cycle_id = 0;   // 1, 2, ...: one per hole (each repeat of an L-repeat counts)
+  std::uint16_t g_code_x10 = 0; // 730, 810, 820, 830, 840, 841 (G84.1? LinuxCNC: G74), 850..890
+  bool retract_to_r = false;    // true for G99 (retract to R), false for G98 (to initial Z)
+  std::uint8_t plane = 0;       // 0 = XY (G17), 1 = YZ (G19), 2 = XZ (G18)
+  double x = 0, y = 0;          // hole position in the plane's first/second axes
+  double clearance = 0;         // the initial (G98) level along the plane's normal axis
+  double r = 0;                 // retract plane
+  double z = 0;                 // hole bottom
+  double q = 0;                 // peck increment (G73/G83), 0 when not given
+  double p = 0;                 // dwell seconds (G82/G86/G88/G89), 0 when not given
+  double k = 0;                 // G76-style extra parameter / thread pitch where a dialect has one
+  std::uint32_t repeat = 1;     // L: number of repeats of this block
+};
+
+enum class Units : std::uint8_t { Inches, Millimeters };
+enum class Plane : std::uint8_t { XY, YZ, XZ, UV, VW, UW };
+enum class FeedReference : std::uint8_t { Workpiece, Xyz };
+enum class MotionControlMode : std::uint8_t { ExactStop, ExactPath, Continuous };
+enum class Side : std::uint8_t { Left, Right, Off };
+enum class Direction : std::uint8_t { Stopped, Clockwise, Counterclockwise };
+
+// Nine-axis position, as LinuxCNC passes it (x y z a b c u v w).
+struct Pose {
+  double x = 0, y = 0, z = 0, a = 0, b = 0, c = 0, u = 0, v = 0, w = 0;
+  friend bool operator==(const Pose&, const Pose&) = default;
+};
+
+// ---- Representation
+struct UseLengthUnits { Units units; };
+struct SetG5xOffset { int index; Pose offset; };          // index 1..9 = G54..G59.3
+struct SetG92Offset { Pose offset; };
+struct SetXyRotation { double degrees; };
+struct SelectPlane { Plane plane; };
+struct SetTraverseRate { double rate; };
+
+// ---- Free-space motion
+struct StraightTraverse { Pose end; };
+
+// ---- Machining attributes
+struct SetFeedRate { double rate; };
+struct SetFeedReference { FeedReference reference; };
+struct SetFeedMode { int spindle; int mode; };             // 0 units/min, 1 inverse time, 2 per rev
+struct SetMotionControlMode { MotionControlMode mode; double tolerance; };
+struct SetNaivecamTolerance { double tolerance; };
+struct SetCutterRadiusCompensation { double radius; };
+struct StartCutterRadiusCompensation { Side side; };
+struct StopCutterRadiusCompensation {};
+struct StartSpeedFeedSynch { int spindle; double feed_per_revolution; bool velocity_mode; };
+struct StopSpeedFeedSynch {};
+
+// ---- Machining functions
+// first/second: the plane's two axes (XY: x,y; YZ: y,z; XZ: z,x); axis_end_point along the normal.
+// rotation: >0 counter-clockwise turns, <0 clockwise, |rotation| = number of turns (LinuxCNC).
+struct ArcFeed {
+  double first_end, second_end, first_axis, second_axis;
+  int rotation;
+  double axis_end_point;
+  double a, b, c, u, v, w;
+};
+struct StraightFeed { Pose end; };
+struct StraightProbe { Pose end; };
+struct RigidTap { Pose end; double scale; };
+struct Dwell { double seconds; };
+
+// ---- Spindle
+struct SetSpindleSpeed { int spindle; double rpm; };
+struct StartSpindleClockwise { int spindle; };
+struct StartSpindleCounterclockwise { int spindle; };
+struct StopSpindleTurning { int spindle; };
+struct SetSpindleMode { int spindle; double css_maximum; };  // 0 = constant rpm
+struct OrientSpindle { int spindle; double orientation; int mode; };
+struct SpindleRetract {};
+
+// ---- Tool
+struct UseToolLengthOffset { Pose offset; };
+struct SelectTool { int tool; };
+struct StartChange {};
+struct ChangeTool { int slot; };
+struct ChangeToolNumber { int number; };
+
+// ---- Miscellaneous
+struct Comment { std::string text; };
+struct Message { std::string text; };
+struct FloodOn {};
+struct FloodOff {};
+struct MistOn {};
+struct MistOff {};
+struct EnableFeedOverride { int spindle; };
+struct DisableFeedOverride { int spindle; };
+struct EnableSpeedOverride { int spindle; };
+struct DisableSpeedOverride { int spindle; };
+struct EnableAdaptiveFeed {};
+struct DisableAdaptiveFeed {};
+struct EnableFeedHold {};
+struct DisableFeedHold {};
+
+// ---- Program
+struct OptionalProgramStop {};
+struct ProgramStop {};
+struct ProgramEnd {};
+struct PalletShuttle {};
+struct OnReset {};
+
+using Data = std::variant<
+    UseLengthUnits, SetG5xOffset, SetG92Offset, SetXyRotation, SelectPlane, SetTraverseRate,
+    StraightTraverse,
+    SetFeedRate, SetFeedReference, SetFeedMode, SetMotionControlMode, SetNaivecamTolerance,
+    SetCutterRadiusCompensation, StartCutterRadiusCompensation, StopCutterRadiusCompensation,
+    StartSpeedFeedSynch, StopSpeedFeedSynch,
+    ArcFeed, StraightFeed, StraightProbe, RigidTap, Dwell,
+    SetSpindleSpeed, StartSpindleClockwise, StartSpindleCounterclockwise, StopSpindleTurning,
+    SetSpindleMode, OrientSpindle, SpindleRetract,
+    UseToolLengthOffset, SelectTool, StartChange, ChangeTool, ChangeToolNumber,
+    Comment, Message, FloodOn, FloodOff, MistOn, MistOff,
+    EnableFeedOverride, DisableFeedOverride, EnableSpeedOverride, DisableSpeedOverride,
+    EnableAdaptiveFeed, DisableAdaptiveFeed, EnableFeedHold, DisableFeedHold,
+    OptionalProgramStop, ProgramStop, ProgramEnd, PalletShuttle, OnReset>;
+
+struct Call {
+  Data data;
+  Source source;
+  std::optional<CycleTag> cycle;  // set on every call a canned cycle made
+};
+
+// NIST name of a call, e.g. "STRAIGHT_FEED".
+std::string_view name_of(const Data& data);
+
+// Receives a canonical call stream. A stream announces each program file it reads from
+// (index -> path) before the first call whose Source refers to it, then the calls in order,
+// then end() once. Implementations: the rs274-format printer, the cc1_builder, the DDS
+// batcher, test collectors.
+class Sink {
+ public:
+  virtual ~Sink() = default;
+  virtual void source_file(std::uint32_t /*index*/, std::string_view /*path*/) {}
+  virtual void call(const Call& call) = 0;
+  virtual void end() {}
+};
+
+}  // namespace ncbridge::canonical

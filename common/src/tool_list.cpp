@@ -1,0 +1,186 @@
+#include "ncbridge/setup/tool_list.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <fstream>
+#include <sstream>
+#include <utility>
+
+#include "ncbridge/common/error.hpp"
+#include "ncbridge/setup/yaml_input.hpp"
+
+namespace ncbridge::setup {
+
+namespace {
+
+constexpr std::array<std::pair<std::string_view, ToolType>, 12> kToolTypeNames{{
+    {"face_mill", ToolType::FaceMill},       {"flat_end_mill", ToolType::FlatEndMill},
+    {"ball_end_mill", ToolType::BallEndMill}, {"bull_nose_end_mill", ToolType::BullNoseEndMill},
+    {"drill", ToolType::Drill},              {"center_drill", ToolType::CenterDrill},
+    {"spot_drill", ToolType::SpotDrill},     {"reamer", ToolType::Reamer},
+    {"tap", ToolType::Tap},                  {"boring_bar", ToolType::BoringBar},
+    {"t_slot_mill", ToolType::TSlotMill},    {"chamfer_mill", ToolType::ChamferMill},
+}};
+
+// Names other tools write for the same kinds (FreeCAD, common CAM vocabularies).
+constexpr std::array<std::pair<std::string_view, ToolType>, 9> kToolTypeAliases{{
+    {"twist_drill", ToolType::Drill},     {"endmill", ToolType::FlatEndMill},
+    {"end_mill", ToolType::FlatEndMill},  {"ball_end", ToolType::BallEndMill},
+    {"ballend", ToolType::BallEndMill},   {"bullnose", ToolType::BullNoseEndMill},
+    {"centerdrill", ToolType::CenterDrill}, {"spotdrill", ToolType::SpotDrill},
+    {"chamfer", ToolType::ChamferMill},
+}};
+
+void sort_and_check(std::vector<Tool>& tools, const std::string& file) {
+  std::sort(tools.begin(), tools.end(), [](const Tool& a, const Tool& b) { return a.number < b.number; });
+  for (std::size_t i = 1; i < tools.size(); ++i) {
+    if (tools[i].number == tools[i - 1].number) {
+      throw InputError({file, 0, 0}, "tool number " + std::to_string(tools[i].number) + " appears twice");
+    }
+  }
+}
+
+}  // namespace
+
+std::string_view to_string(ToolType type) {
+  for (const auto& [name, t] : kToolTypeNames) {
+    if (t == type) return name;
+  }
+  return "unknown";
+}
+
+std::optional<ToolType> tool_type_from_string(std::string_view name) {
+  for (const auto& [n, t] : kToolTypeNames) {
+    if (n == name) return t;
+  }
+  for (const auto& [n, t] : kToolTypeAliases) {
+    if (n == name) return t;
+  }
+  return std::nullopt;
+}
+
+ToolList::ToolList(std::vector<Tool> tools) : tools_(std::move(tools)) {
+  sort_and_check(tools_, "");
+}
+
+const Tool* ToolList::find(int number) const {
+  auto it = std::lower_bound(tools_.begin(), tools_.end(), number,
+                             [](const Tool& t, int n) { return t.number < n; });
+  return (it != tools_.end() && it->number == number) ? &*it : nullptr;
+}
+
+ToolList parse_tool_list(std::string_view text, const std::string& file) {
+  YAML::Node root = parse_yaml_document(text, file);
+  YAML::Node list = root;
+  if (root.IsMap() && root["tools"]) list = root["tools"];
+  if (!list.IsSequence()) {
+    throw InputError(location_of(root, file), "a tool list is a list of tools (or {\"tools\": [...]})");
+  }
+  std::vector<Tool> tools;
+  for (const YAML::Node& node : list) {
+    if (!node.IsMap()) throw InputError(location_of(node, file), "each tool is an object");
+    Tool t;
+    t.number = required_int(node, "number", file);
+    if (t.number < 0) throw InputError(location_of(node["number"], file), "tool number must be >= 0");
+    t.name = optional_string(node, "name", file).value_or("");
+    if (auto type = optional_string(node, "type", file)) {
+      auto parsed = tool_type_from_string(*type);
+      if (!parsed) {
+        std::string known;
+        for (const auto& [n, _] : kToolTypeNames) known += (known.empty() ? "" : ", ") + std::string(n);
+        throw InputError(location_of(node["type"], file), "unknown tool type '" + *type + "' (known: " + known + ")");
+      }
+      t.type = *parsed;
+    }
+    t.diameter = optional_number(node, "diameter", file).value_or(0);
+    t.length = optional_number(node, "length", file).value_or(0);
+    t.corner_radius = optional_number(node, "corner_radius", file).value_or(0);
+    t.flute_length = optional_number(node, "flute_length", file).value_or(0);
+    t.flutes = static_cast<int>(optional_number(node, "flutes", file).value_or(0));
+    t.point_angle = optional_number(node, "point_angle", file)
+                        .value_or(optional_number(node, "tip_angle", file).value_or(0));
+    t.thread_pitch = optional_number(node, "thread_pitch", file).value_or(0);
+    t.pocket = static_cast<int>(optional_number(node, "pocket", file).value_or(t.number));
+    for (const char* key : {"diameter", "length", "corner_radius", "flute_length"}) {
+      if (node[key] && node[key].as<double>() < 0) {
+        throw InputError(location_of(node[key], file), std::string(key) + " must not be negative");
+      }
+    }
+    tools.push_back(std::move(t));
+  }
+  sort_and_check(tools, file);
+  return ToolList(std::move(tools));
+}
+
+ToolList read_tool_list(const std::filesystem::path& file) {
+  return parse_tool_list(read_text_file(file), file.string());
+}
+
+// LinuxCNC tool table: each line `T<n> P<pocket> [X..] [Y..] [Z..] [A..]... [D<diam>] [I..] [J..] [Q..] [;comment]`.
+ToolList parse_linuxcnc_tool_table(std::string_view text, LengthUnits units, const std::string& file) {
+  const double to_mm = units == LengthUnits::Inches ? 25.4 : 1.0;
+  std::vector<Tool> tools;
+  std::uint32_t line_no = 0;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string_view::npos) eol = text.size();
+    std::string_view line = text.substr(pos, eol - pos);
+    pos = eol + 1;
+    ++line_no;
+    std::string comment;
+    if (auto semi = line.find(';'); semi != std::string_view::npos) {
+      comment = std::string(line.substr(semi + 1));
+      line = line.substr(0, semi);
+    }
+    Tool t;
+    bool has_t = false;
+    std::size_t i = 0;
+    while (i < line.size()) {
+      char c = line[i];
+      if (c == ' ' || c == '\t' || c == '\r') { ++i; continue; }
+      const std::uint32_t column = static_cast<std::uint32_t>(i + 1);
+      char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      ++i;
+      std::size_t start = i;
+      while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+      std::string_view num = line.substr(start, i - start);
+      if (!num.empty() && num.front() == '+') num.remove_prefix(1);
+      double value = 0;
+      auto [p, ec] = std::from_chars(num.data(), num.data() + num.size(), value);
+      if (num.empty() || ec != std::errc() || p != num.data() + num.size()) {
+        throw InputError({file, line_no, column}, std::string("bad number after '") + letter + "' in tool table");
+      }
+      switch (letter) {
+        case 'T': t.number = static_cast<int>(value); has_t = true; break;
+        case 'P': t.pocket = static_cast<int>(value); break;
+        case 'D': t.diameter = value * to_mm; break;
+        case 'Z': t.length = value * to_mm; break;
+        case 'X': t.x_offset = value * to_mm; break;
+        case 'Y': case 'A': case 'B': case 'C': case 'U': case 'V': case 'W':
+        case 'I': case 'J': case 'Q': break;  // kept by LinuxCNC; no meaning for 3-axis milling here
+        default:
+          throw InputError({file, line_no, column}, std::string("unknown word '") + letter + "' in tool table");
+      }
+    }
+    if (!has_t) {
+      if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;  // blank or comment-only
+      throw InputError({file, line_no, 1}, "tool table line without a T word");
+    }
+    auto first = comment.find_first_not_of(' ');
+    t.name = first == std::string::npos ? std::string() : comment.substr(first);
+    if (t.pocket == 0) t.pocket = t.number;
+    tools.push_back(std::move(t));
+  }
+  sort_and_check(tools, file);
+  return ToolList(std::move(tools));
+}
+
+ToolList read_linuxcnc_tool_table(const std::filesystem::path& file, LengthUnits units) {
+  return parse_linuxcnc_tool_table(read_text_file(file), units, file.string());
+}
+
+}  // namespace ncbridge::setup
