@@ -1,0 +1,31 @@
+#pragma once
+// The interpreter stage: a part program in some controller dialect -> NIST canonical calls.
+// Programs are read as a stream (memory stays flat in program length). The first error stops
+// interpretation and throws ncbridge::InputError naming file, line and column; calls already
+// delivered to the sink stay delivered (callers that write files write atomically).
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ncbridge/canonical/call.hpp"
+#include "ncbridge/setup/tool_list.hpp"
+
+namespace ncbridge::interpreter {
+
+enum class Dialect { Rs274Ngc, Fanuc, Mach3, Siemens840D, Heidenhain, Auto };
+
+struct Options {
+  Dialect dialect = Dialect::Rs274Ngc;
+  setup::ToolList tools;                                  // lengths/diameters in mm
+  std::vector<std::filesystem::path> subroutine_path;    // where `o<name> call` files are found
+};
+
+// Interprets the program in `program`, streaming calls into `sink` (source_file, call..., end).
+void interpret_file(const std::filesystem::path& program, const Options& options, canonical::Sink& sink);
+
+// Same, for a program held in memory; `name` is used in source locations and errors.
+void interpret_text(std::string_view text, const std::string& name, const Options& options,
+                    canonical::Sink& sink);
+
+}  // namespace ncbridge::interpreter
