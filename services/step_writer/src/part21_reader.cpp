@@ -149,6 +149,7 @@ class Parser {
   std::string found() const {
     if (current_.kind == TokenKind::End) return "the end of the file";
     std::string text(current_.text.substr(0, 40));
+    if (current_.kind == TokenKind::InstanceName) text.insert(0, "#");
     return std::string(describe(current_.kind)) + " '" + text + "'";
   }
   void warn(const Token& t, std::string message) {
