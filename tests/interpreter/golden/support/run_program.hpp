@@ -1,0 +1,27 @@
+#pragma once
+// Runs a program to completion, capturing its standard output and error (tests only).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ncbridge::testing {
+
+struct ProgramRun {
+  int exit_code = -1;    // the exit status, or 128 + signal number when killed by a signal
+  std::string out;       // standard output
+  std::string err;       // standard error
+};
+
+struct RunOptions {
+  std::filesystem::path working_directory;  // empty: the caller's
+  std::vector<std::string> extra_environment;  // "NAME=value" entries added to the caller's
+};
+
+// argv[0] is the executable path. Standard input is /dev/null. Throws std::runtime_error when the
+// program cannot be started.
+ProgramRun run_program(const std::vector<std::string>& argv, const RunOptions& options = {});
+
+// The full path of `name` found on PATH, or empty.
+std::filesystem::path find_on_path(const std::string& name);
+
+}  // namespace ncbridge::testing
