@@ -124,14 +124,14 @@ class Parser {
         skip_section(keyword);
       } else if (keyword == "END-ISO-10303-21") {
         advance();
-        expect(TokenKind::Semicolon, "after END-ISO-10303-21");
-        break;
+        if (current_.kind != TokenKind::Semicolon) expect(TokenKind::Semicolon, "after END-ISO-10303-21");
+        break;  // not past the ';': what follows need not be Part 21 tokens
       } else {
         fail_here("expected DATA or END-ISO-10303-21, found " + std::string(current_.text));
       }
     }
     if (!data_seen) warn(current_, "the file has no DATA section");
-    if (current_.kind != TokenKind::End && !tokens_.only_blanks_left())
+    if (!tokens_.only_blanks_left())
       warn(current_, "text after END-ISO-10303-21; (e.g. a SIGNATURE section) is ignored");
     check_references();
     return std::move(result_);
@@ -179,10 +179,15 @@ class Parser {
 
   void skip_section(const std::string& name) {
     warn(current_, name + " section is not supported and is skipped");
-    advance();
-    while (!(current_.kind == TokenKind::Keyword && upper(current_.text) == "ENDSEC")) {
-      if (current_.kind == TokenKind::End) fail_here(name + " section has no ENDSEC");
+    if (current_.kind == TokenKind::Keyword) {
+      // The tokenizer already stands after the keyword; the body may hold <anchor> syntax.
+      Token section = current_;
       advance();
+      if (current_.kind != TokenKind::Semicolon) fail_here("expected ';' after " + name);
+      tokens_.skip_to_endsec();
+      advance();
+      if (!(current_.kind == TokenKind::Keyword && upper(current_.text) == "ENDSEC"))
+        fail_at(section, name + " section has no ENDSEC");
     }
     advance();
     expect(TokenKind::Semicolon, "after ENDSEC");

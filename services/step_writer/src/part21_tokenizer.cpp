@@ -69,6 +69,21 @@ void Tokenizer::skip_blanks_and_comments() {
   }
 }
 
+void Tokenizer::skip_to_endsec() {
+  for (;;) {
+    skip_blanks_and_comments();
+    if (at_end()) return;
+    if (text_.substr(pos_, 6) == "ENDSEC" && !is_keyword_char(peek(6))) return;
+    if (peek() == '\'') {
+      std::uint32_t line = line_, column = column_;
+      advance();
+      while (!at_end() && peek() != '\'') advance();
+      if (at_end()) fail(line, column, "string is never closed with '");
+    }
+    advance();
+  }
+}
+
 bool Tokenizer::only_blanks_left() {
   skip_blanks_and_comments();
   return at_end();

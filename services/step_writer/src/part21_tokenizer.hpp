@@ -37,6 +37,8 @@ class Tokenizer {
   Token next();
   SourceLocation location(std::uint32_t line, std::uint32_t column) const { return {file_, line, column}; }
   [[noreturn]] void fail(std::uint32_t line, std::uint32_t column, const std::string& message) const;
+  // Skips the body of a section this reader does not interpret, up to (not over) its ENDSEC.
+  void skip_to_endsec();
   // Skips everything up to the end of the text (SIGNATURE sections after END-ISO-10303-21;).
   bool only_blanks_left();
 
