@@ -431,6 +431,23 @@ TEST(CutterCompensation, DegenerateMovesNeitherHangNorProduceNonFiniteCoordinate
   EXPECT_GT(refused, 0);
 }
 
+TEST(CutterCompensation, ResetDropsThePendingMoveLikeAnEndOfFileWithoutM2) {
+  // rs274 on "G41 D1 / G1 X1 F10 / G1 X1 Y1 / %" prints the first line only: the last
+  // compensated move is still waiting for its corner when the file ends.
+  Recorder r;
+  CutterCompensation comp(r);
+  comp.set_position(at(0, 0));
+  comp.start(Side::Left, 0.05);
+  comp.straight(true, at(1, 0), {0, 4, -1});
+  comp.straight(true, at(1, 1), {0, 5, -1});
+  comp.reset();
+  EXPECT_FALSE(comp.active());
+  ASSERT_EQ(r.calls.size(), 2u);  // the comment and the first line
+  expect_xy(std::get<canonical::StraightFeed>(r.calls[1].data).end, 0.95, 0.05);
+  comp.flush();
+  EXPECT_EQ(r.calls.size(), 2u);
+}
+
 TEST(CutterCompensation, StartWhileOnIsRefused) {
   Recorder r;
   CutterCompensation comp(r);

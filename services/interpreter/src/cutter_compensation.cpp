@@ -131,7 +131,8 @@ void CutterCompensation::stop(const Source& source) {
 }
 
 void CutterCompensation::reset() {
-  dequeue();
+  queue_.clear();
+  endpoint_valid_ = false;
   side_ = Side::Off;
   first_move_ = true;
 }

@@ -21,7 +21,8 @@
 //    other() may also be used while compensation is off: it then just forwards.
 //  * Before PROGRAM_STOP / OPTIONAL_PROGRAM_STOP / PALLET_SHUTTLE / PROGRAM_END (M0 M1 M60 M2
 //    M30) call flush(); at M2/M30 then call reset() (LinuxCNC turns compensation off there
-//    without a comment and without a G40 exit).
+//    without a comment and without a G40 exit). When the file ends without M2/M30 (or with
+//    `%`), LinuxCNC drops the pending move: call reset() without flush().
 //  * Incremental moves and omitted axes while active are relative to programmed_position(),
 //    not to position(). After stop() (G40) LinuxCNC continues from the PROGRAMMED point: take
 //    programmed_position() as the executor's current point. position() is where the tool
@@ -68,7 +69,8 @@ class CutterCompensation {
 
   // Emits everything queued (LinuxCNC: move_endpoint_and_flush to the current point).
   void flush();
-  // Compensation off without a G40 exit move (program end, after flush()).
+  // Compensation off without a G40 exit move; whatever is still queued is dropped (call
+  // flush() first to keep it, as M2/M30 do).
   void reset();
 
   canonical::Pose position() const { return current_; }
