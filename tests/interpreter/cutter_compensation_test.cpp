@@ -161,7 +161,7 @@ struct Outcome {
 
 // Plays a case program: one block per line, words in LinuxCNC's order of execution, only the
 // words the cases use (comments, F S M0 M2 M3 M5 M8 M9 G0-G4 G17 G20 G21 G40-G42 G90 G91,
-// X Y Z I J P D). Compensation gets programmed geometry; the driver keeps the programmed point.
+// X Y Z I J R P D). Compensation gets programmed geometry; the driver keeps the programmed point.
 Outcome play(const std::string& name) {
   const auto diameters = read_diameters();
   Recorder recorder;
@@ -246,8 +246,19 @@ Outcome play(const std::string& name) {
         if (motion == 0 || motion == 1) {
           comp.straight(motion == 1, end, source);
         } else {
-          const double cx = position.x + word('I').value_or(0.0);
-          const double cy = position.y + word('J').value_or(0.0);
+          double cx = position.x + word('I').value_or(0.0);
+          double cy = position.y + word('J').value_or(0.0);
+          if (auto r = word('R')) {  // centre on the chord's bisector; R < 0: the long way round
+            const double mx = (position.x + end.x) / 2;
+            const double my = (position.y + end.y) / 2;
+            const double half = std::hypot(end.x - mx, end.y - my);
+            const bool right_of_chord = (motion == 2) == (*r > 0);
+            const double dir = std::atan2(end.y - position.y, end.x - position.x) +
+                               (right_of_chord ? -M_PI_2 : M_PI_2);
+            const double offset = std::fabs(*r) * std::cos(std::asin(std::min(1.0, half / std::fabs(*r))));
+            cx = mx + offset * std::cos(dir);
+            cy = my + offset * std::sin(dir);
+          }
           comp.arc(ArcFeed{end.x, end.y, cx, cy, motion == 3 ? 1 : -1, end.z, 0, 0, 0, 0, 0, 0}, source);
         }
         position = end;
