@@ -70,8 +70,15 @@ Printed printed(const Call& call) {
         } else if constexpr (std::is_same_v<T, canonical::SetSpindleSpeed>) {
           p.numbers = {double(d.spindle), d.rpm};
         } else if constexpr (std::is_same_v<T, canonical::StartSpindleClockwise> ||
+                             std::is_same_v<T, canonical::StartSpindleCounterclockwise> ||
                              std::is_same_v<T, canonical::StopSpindleTurning>) {
           p.numbers = {double(d.spindle)};
+        } else if constexpr (std::is_same_v<T, canonical::SetFeedMode>) {
+          p.numbers = {double(d.spindle), double(d.mode)};
+        } else if constexpr (std::is_same_v<T, canonical::OrientSpindle>) {
+          p.numbers = {double(d.spindle), d.orientation, double(d.mode)};
+        } else if constexpr (std::is_same_v<T, canonical::SelectTool>) {
+          p.numbers = {double(d.tool)};
         } else if constexpr (std::is_same_v<T, canonical::Comment> || std::is_same_v<T, canonical::Message>) {
           p.text = d.text;
         } else if constexpr (std::is_same_v<T, canonical::UseLengthUnits>) {
@@ -160,8 +167,8 @@ struct Outcome {
 };
 
 // Plays a case program: one block per line, words in LinuxCNC's order of execution, only the
-// words the cases use (comments, F S M0 M2 M3 M5 M8 M9 G0-G4 G17 G20 G21 G40-G42 G90 G91,
-// X Y Z I J R P D). Compensation gets programmed geometry; the driver keeps the programmed point.
+// words the cases use (comments, F S T M0 M2 M3 M4 M5 M8 M9 M19 G0-G4 G17 G20 G21 G40-G42 G90
+// G91 G94 G95, X Y Z I J R P D). Compensation gets programmed geometry; the driver keeps the programmed point.
 Outcome play(const std::string& name) {
   const auto diameters = read_diameters();
   Recorder recorder;
@@ -207,10 +214,20 @@ Outcome play(const std::string& name) {
         if (comment->rfind("MSG,", 0) == 0) other(canonical::Message{comment->substr(4)});
         else other(canonical::Comment{*comment});
       }
+      for (int g : {94, 95}) {
+        if (!has('G', g)) continue;
+        other(canonical::Comment{g == 94 ? "interpreter: feed mode set to units per minute"
+                                         : "interpreter: feed mode set to units per revolution"});
+        other(canonical::SetFeedMode{0, g == 94 ? 0 : 1});
+        other(canonical::SetFeedRate{0});
+      }
       if (auto f = word('F')) other(canonical::SetFeedRate{*f});
       if (auto s = word('S')) other(canonical::SetSpindleSpeed{0, *s});
+      if (auto t = word('T')) other(canonical::SelectTool{int(*t)});
       if (has('M', 3)) other(canonical::StartSpindleClockwise{0});
+      if (has('M', 4)) other(canonical::StartSpindleCounterclockwise{0});
       if (has('M', 5)) other(canonical::StopSpindleTurning{0});
+      if (has('M', 19)) other(canonical::OrientSpindle{0, word('R').value_or(0.0), 0});
       if (has('M', 8)) other(canonical::FloodOn{});
       if (has('M', 9)) { other(canonical::MistOff{}); other(canonical::FloodOff{}); }
       if (has('G', 4)) other(canonical::Dwell{*word('P')});

@@ -59,6 +59,7 @@ bool waits_for_pending_move(const canonical::Data& data) {
          std::holds_alternative<canonical::StopSpindleTurning>(data) ||
          std::holds_alternative<canonical::SetSpindleMode>(data) ||
          std::holds_alternative<canonical::SetSpindleSpeed>(data) ||
+         std::holds_alternative<canonical::OrientSpindle>(data) ||
          std::holds_alternative<canonical::Comment>(data);
 }
 
