@@ -1,0 +1,65 @@
+#pragma once
+// Phase 1, cutter-location analysis: the workingsteps' feed moves cut into passes (a pass ends
+// at every rapid), drilling passes told from milling ones, and milling passes sliced into
+// layers (one cutting level each, the plunges and ramps that reach it included).
+#include <cstddef>
+#include <vector>
+
+#include "ncbridge/feature_recognizer/toolpath.hpp"
+#include "region.hpp"
+
+namespace ncbridge::feature_recognizer {
+
+struct ArcPiece {
+  Point2 center;
+  double radius = 0;
+  double sweep = 0;  // signed, radians (counter-clockwise > 0)
+  double z_start = 0, z_end = 0;
+};
+
+// Feed moves of one workingstep between two rapids, arcs as chords within the tolerance.
+struct CuttingPass {
+  std::size_t workingstep = 0;
+  std::vector<Point3> points;   // the polyline, first point = where the feed motion starts
+  std::vector<ArcPiece> arcs;   // the arcs among its moves
+  double xy_length = 0;
+  double z_min = 0, z_max = 0;
+  bool z_only() const;          // a plunge: no motion in XY beyond 1 µm
+};
+
+// One cutting level of one tool: the paths cut at that level, in order.
+struct Layer {
+  std::vector<std::size_t> workingsteps;  // ascending, unique
+  setup::Tool tool;
+  double z = 0;                            // the cutting level (lowest tool tip z)
+  double z_top = 0;                        // highest z of its cutting moves (ramp entries)
+  std::vector<std::vector<Point3>> paths;  // one per pass piece
+  std::vector<ArcPiece> arcs;
+  double feed = 0, spindle_rpm = 0;
+  bool freeform = false;                   // x, y and z vary together (3D surface machining)
+  Region area;                             // the tool's swept region (filled in by the caller)
+  Box2 extent;                             // bounding box of the swept region
+  std::vector<std::vector<Point2>> xy_paths() const;
+};
+
+struct DrillPass {
+  std::size_t workingstep = 0;
+  setup::Tool tool;
+  Point2 at;
+  double z_bottom = 0, z_top = 0;
+  std::optional<canonical::CycleTag> cycle;
+  double feed = 0, spindle_rpm = 0;
+};
+
+struct CutterLocationAnalysis {
+  std::vector<DrillPass> drill_passes;
+  std::vector<Layer> layers;  // milling layers in machining order
+};
+
+CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkingstep>& workingsteps,
+                                                double chord_tolerance);
+
+// True for tools that only cut along their axis (drills, reamers, taps, boring bars).
+bool is_hole_making_tool(setup::ToolType type);
+
+}  // namespace ncbridge::feature_recognizer

@@ -1,0 +1,309 @@
+#include "feature_classification.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "milling_strategy.hpp"
+#include "profile_fit.hpp"
+#include "swept_area.hpp"
+
+namespace ncbridge::feature_recognizer {
+namespace {
+
+Region stock_rectangle(const setup::Stock& stock) {
+  return Region::rectangle({stock.min[0], stock.min[1], stock.max[0], stock.max[1]});
+}
+
+Point2 box_center(const Box2& b) { return {(b.xmin + b.xmax) / 2, (b.ymin + b.ymax) / 2}; }
+
+// The largest area the group's cut surrounds without cutting it (the part, for an outside
+// profile), if the group also covers everything between it and the stock's edge.
+std::optional<Region> surrounded_part(const MillingGroup& group, const Region& stock_rect) {
+  const double stock_area = stock_rect.area();
+  if (stock_rect.minus(group.filled).area() > 0.005 * stock_area) return std::nullopt;
+  const Region inside = group.filled.minus(group.area);
+  std::optional<Region> best;
+  for (auto& c : inside.components()) {
+    if (!best || c.area() > best->area()) best = c;
+  }
+  if (!best || best->area() < 0.1 * stock_area) return std::nullopt;
+  return best->filled();
+}
+
+OperationType milling_operation_type(FeatureType type, bool finishing) {
+  switch (type) {
+    case FeatureType::PlanarFace:
+      return finishing ? OperationType::PlaneFinishMilling : OperationType::PlaneRoughMilling;
+    case FeatureType::GeneralOutsideProfile:
+      return finishing ? OperationType::SideFinishMilling : OperationType::SideRoughMilling;
+    case FeatureType::Region: return OperationType::FreeformOperation;
+    default:
+      return finishing ? OperationType::BottomAndSideFinishMilling : OperationType::BottomAndSideRoughMilling;
+  }
+}
+
+double outer_perimeter(const Region& r) {
+  double p = 0;
+  for (const auto& pwh : r.polygons()) p += perimeter(pwh.outer);
+  return p;
+}
+
+std::vector<RecognizedOperation> make_operations(const MillingGroup& group, const std::vector<Layer>& layers,
+                                                 FeatureType type) {
+  std::vector<RecognizedOperation> ops;
+  const auto& last_op = group.operations.back();
+  Region last_fill;
+  double last_floor = 1e300;
+  for (auto i : last_op.layers) {
+    last_fill = last_fill.united(layers[i].area.filled());
+    last_floor = std::min(last_floor, layers[i].z);
+  }
+  for (std::size_t k = 0; k < group.operations.size(); ++k) {
+    const auto& lop = group.operations[k];
+    const bool last = k + 1 == group.operations.size();
+    // A single operation is a finish for faces and outside profiles (they reach their final
+    // surface directly), a roughing for pockets, slots and steps.
+    const bool finishing = last && (group.operations.size() > 1 || type == FeatureType::PlanarFace ||
+                                    type == FeatureType::GeneralOutsideProfile);
+    RecognizedOperation op;
+    op.type = milling_operation_type(type, finishing);
+    op.tool_number = lop.tool_number;
+    op.layers = static_cast<int>(lop.layers.size());
+    const Layer* deepest = &layers[lop.layers.front()];
+    Region fill;
+    double floor = 1e300;
+    std::vector<double> levels;
+    for (auto i : lop.layers) {
+      const auto& l = layers[i];
+      if (l.z < deepest->z) deepest = &l;
+      fill = fill.united(l.area.filled());
+      floor = std::min(floor, l.z);
+      levels.push_back(l.z);
+      for (auto w : l.workingsteps) op.workingsteps.push_back(w);
+    }
+    std::sort(op.workingsteps.begin(), op.workingsteps.end());
+    op.workingsteps.erase(std::unique(op.workingsteps.begin(), op.workingsteps.end()), op.workingsteps.end());
+    std::sort(levels.begin(), levels.end());
+    levels.erase(std::unique(levels.begin(), levels.end(), [](double a, double b) { return std::abs(a - b) < 1e-3; }),
+                 levels.end());
+    for (std::size_t j = 1; j < levels.size(); ++j) op.axial_depth = std::max(op.axial_depth, levels[j] - levels[j - 1]);
+    const auto strategy = analyse_strategy(*deepest);
+    op.strategy = strategy.strategy;
+    op.radial_depth = strategy.stepover;
+    op.feed = deepest->feed;
+    op.spindle_rpm = deepest->spindle_rpm;
+    if (!last) {
+      const double per = outer_perimeter(last_fill);
+      const double side = per > 0 ? (last_fill.area() - fill.area()) / per : 0;
+      op.side_allowance = side > 0.01 ? side : 0;
+      op.bottom_allowance = floor - last_floor > 0.01 ? floor - last_floor : 0;
+    }
+    ops.push_back(std::move(op));
+  }
+  return ops;
+}
+
+struct OpenContact {
+  std::vector<OpenSide> sides;
+  std::vector<Box2> pieces;
+  double coverage[4] = {0, 0, 0, 0};  // length of each side of the part's box the cut opens
+};
+
+OpenContact open_contact(const Region& area, const PartEnvelope& part) {
+  OpenContact out;
+  const double near = kOpenBandWidth + 0.1;
+  const Box2& e = part.box;
+  for (const auto& piece : area.intersected(part.outside_band).components()) {
+    if (piece.area() < 0.05 * kOpenBandWidth) continue;  // touches at a point
+    const Box2 b = *piece.bbox();
+    out.pieces.push_back(b);
+    const double along_y = std::max(0.0, std::min(b.ymax, e.ymax) - std::max(b.ymin, e.ymin));
+    const double along_x = std::max(0.0, std::min(b.xmax, e.xmax) - std::max(b.xmin, e.xmin));
+    if (b.xmin <= e.xmin + near) out.coverage[0] += along_y;
+    if (b.xmax >= e.xmax - near) out.coverage[1] += along_y;
+    if (b.ymin <= e.ymin + near) out.coverage[2] += along_x;
+    if (b.ymax >= e.ymax - near) out.coverage[3] += along_x;
+  }
+  const OpenSide names[4] = {OpenSide::XMinus, OpenSide::XPlus, OpenSide::YMinus, OpenSide::YPlus};
+  for (int s = 0; s < 4; ++s) {
+    if (out.coverage[s] > 0) out.sides.push_back(names[s]);
+  }
+  return out;
+}
+
+bool has_side(const OpenContact& c, OpenSide s) {
+  return std::find(c.sides.begin(), c.sides.end(), s) != c.sides.end();
+}
+
+Ring outer_ring(const Region& r) {
+  Ring best;
+  double best_area = -1;
+  for (const auto& pwh : r.polygons()) {
+    const double a = Region::polygon(pwh.outer).area();
+    if (a > best_area) best_area = a, best = pwh.outer;
+  }
+  return best;
+}
+
+// The straight centre line of a slot whose area is the rectangle `rect`.
+std::vector<Point2> rectangle_course(const OrientedRectangle& rect, double end_inset) {
+  const double a = rect.angle_deg * 3.14159265358979323846 / 180;
+  const double half = rect.length / 2 - end_inset;
+  return {{rect.center.x - half * std::cos(a), rect.center.y - half * std::sin(a)},
+          {rect.center.x + half * std::cos(a), rect.center.y + half * std::sin(a)}};
+}
+
+}  // namespace
+
+PartEnvelope find_part_envelope(const std::vector<MillingGroup>& groups, const setup::Stock& stock,
+                                double tolerance) {
+  PartEnvelope part;
+  const Region stock_rect = stock_rectangle(stock);
+  part.stock = stock_rect;
+  part.outline = stock_rect;
+  part.bottom_z = stock.min[2];
+  std::optional<double> profile_floor;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (groups[g].freeform) continue;
+    if (auto inside = surrounded_part(groups[g], stock_rect)) {
+      part.outline = part.outline.intersected(*inside);
+      part.outside_profiles.push_back(g);
+      profile_floor = std::min(profile_floor.value_or(groups[g].floor), groups[g].floor);
+    }
+  }
+  if (profile_floor) part.bottom_z = std::max(part.bottom_z, *profile_floor);
+  part.box = part.outline.bbox().value_or(Box2{stock.min[0], stock.min[1], stock.max[0], stock.max[1]});
+  part.outside_band = boundary_band(part.outline, kOpenBandWidth, tolerance).minus(part.outline);
+  return part;
+}
+
+std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const std::vector<MillingGroup>& groups,
+                                                const std::vector<Layer>& layers, const PartEnvelope& part) {
+  const auto& group = groups[group_index];
+  ClassifiedFeature out;
+  out.order = group.first_workingstep;
+  auto& f = out.feature;
+  f.bottom_z = group.floor;
+  const bool is_profile = std::find(part.outside_profiles.begin(), part.outside_profiles.end(), group_index) !=
+                          part.outside_profiles.end();
+  const auto& first_tool = layers[group.operations.front().layers.front()].tool;
+
+  if (is_profile) {
+    f.type = FeatureType::GeneralOutsideProfile;
+    out.footprint = group.area.intersected(part.stock);
+    const Region inside = group.filled.minus(group.area);
+    Region biggest;
+    for (auto& c : inside.components()) {
+      if (c.area() > biggest.area()) biggest = c;
+    }
+    const Ring outline = outer_ring(biggest);
+    f.profile = fit_closed_profile(outline, biggest.filled().area());
+    if (f.profile.shape == ProfileShape::Rectangular || f.profile.shape == ProfileShape::Circular) {
+      const auto rect = minimum_area_rectangle(outline);
+      f.x = rect.center.x, f.y = rect.center.y;
+    } else {
+      const Point2 c = box_center(*biggest.bbox());
+      f.x = c.x, f.y = c.y;
+    }
+    f.bottom = group.floor <= part.bottom_z + 1e-3 ? BottomCondition::Through : BottomCondition::Planar;
+    f.operations = make_operations(group, layers, f.type);
+    return out;
+  }
+
+  const Region footprint = group.area.intersected(part.outline);
+  if (footprint.area() < 1e-6) return std::nullopt;
+  out.footprint = footprint;
+  const Box2 fbox = *footprint.bbox();
+  const Point2 fcenter = box_center(fbox);
+  f.bottom = group.floor <= part.bottom_z + 1e-3 ? BottomCondition::Through : BottomCondition::Planar;
+
+  auto finish = [&](FeatureType type) {
+    f.type = type;
+    f.operations = make_operations(group, layers, type);
+    return out;
+  };
+
+  if (group.freeform) {
+    f.x = fcenter.x, f.y = fcenter.y;
+    f.bottom = BottomCondition::General;
+    f.profile.outline = outer_ring(footprint);
+    f.profile.shape = ProfileShape::GeneralClosed;
+    return finish(FeatureType::Region);
+  }
+
+  const double part_area = part.outline.area();
+  if (first_tool.type == setup::ToolType::FaceMill || footprint.filled().area() >= 0.95 * part_area) {
+    f.x = fcenter.x, f.y = fcenter.y;
+    f.profile.shape = ProfileShape::Linear;
+    f.profile.length = std::max(fbox.width(), fbox.height());
+    f.profile.width = std::min(fbox.width(), fbox.height());
+    f.profile.angle_deg = fbox.width() >= fbox.height() ? 0 : 90;
+    f.bottom = BottomCondition::None;
+    return finish(FeatureType::PlanarFace);
+  }
+
+  const auto contact = open_contact(group.area, part);
+  std::vector<StrategyAnalysis> strategies;
+  for (auto i : group.layers()) strategies.push_back(analyse_strategy(layers[i]));
+  const bool all_circles = std::all_of(strategies.begin(), strategies.end(), [](const auto& s) { return s.single_circle; });
+  const bool all_center_lines = std::all_of(strategies.begin(), strategies.end(), [](const auto& s) {
+    return s.strategy == Strategy::CenterMilling;
+  });
+  const double tool_d = first_tool.diameter;
+  const Ring outline = outer_ring(footprint);
+  const auto rect = minimum_area_rectangle(outline);
+
+  if (contact.pieces.empty()) {
+    if (all_circles) {
+      const auto& s = strategies.front();
+      f.x = s.circle_center.x, f.y = s.circle_center.y;
+      f.diameter = 2 * s.circle_radius + tool_d;
+      f.profile.shape = ProfileShape::Circular;
+      f.profile.diameter = f.diameter;
+      if (f.bottom != BottomCondition::Through) f.bottom = BottomCondition::Planar;
+      return finish(FeatureType::RoundHole);
+    }
+    f.profile = fit_closed_profile(outline, footprint.filled().area());
+    const bool stadium = f.profile.shape == ProfileShape::Rectangular &&
+                         f.profile.corner_radius >= 0.45 * f.profile.width && f.profile.length >= 1.2 * f.profile.width;
+    if (all_center_lines || stadium) {
+      f.x = rect.center.x, f.y = rect.center.y;
+      f.slot_width = all_center_lines ? tool_d : rect.width;
+      f.slot_ends = {SlotEnd::Radiused, SlotEnd::Radiused};
+      f.slot_course = rectangle_course(rect, f.slot_width / 2);
+      return finish(FeatureType::Slot);
+    }
+    f.x = rect.center.x, f.y = rect.center.y;
+    return finish(FeatureType::ClosedPocket);
+  }
+
+  f.open_sides = contact.sides;
+  f.x = fcenter.x, f.y = fcenter.y;
+  f.profile.outline = outline;
+  f.profile.length = rect.length;
+  f.profile.width = rect.width;
+  f.profile.angle_deg = rect.angle_deg;
+  f.profile.shape = ProfileShape::GeneralClosed;
+
+  const double side_length[4] = {part.box.height(), part.box.height(), part.box.width(), part.box.width()};
+  for (int s = 0; s < 4; ++s) {
+    if (contact.coverage[s] >= 0.9 * side_length[s]) {
+      f.bottom = BottomCondition::None;
+      return finish(FeatureType::Step);
+    }
+  }
+  const bool across_x = has_side(contact, OpenSide::XMinus) && has_side(contact, OpenSide::XPlus);
+  const bool across_y = has_side(contact, OpenSide::YMinus) && has_side(contact, OpenSide::YPlus);
+  const bool strip = rect.length > 0 && footprint.area() >= 0.95 * rect.length * rect.width;
+  if (contact.pieces.size() >= 2 && (across_x || across_y) && strip) {
+    f.x = rect.center.x, f.y = rect.center.y;
+    f.slot_width = rect.width;
+    f.slot_ends = {SlotEnd::Open, SlotEnd::Open};
+    f.slot_course = rectangle_course(rect, 0);
+    f.profile.shape = ProfileShape::Linear;
+    return finish(FeatureType::Slot);
+  }
+  return finish(FeatureType::OpenPocket);
+}
+
+}  // namespace ncbridge::feature_recognizer

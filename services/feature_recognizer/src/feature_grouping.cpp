@@ -1,0 +1,66 @@
+#include "feature_grouping.hpp"
+
+#include <algorithm>
+
+namespace ncbridge::feature_recognizer {
+
+std::vector<std::size_t> MillingGroup::layers() const {
+  std::vector<std::size_t> out;
+  for (const auto& op : operations) out.insert(out.end(), op.layers.begin(), op.layers.end());
+  return out;
+}
+
+std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance) {
+  std::vector<MillingGroup> groups;
+  std::optional<std::size_t> last_group;  // the group the previous layer went to
+  std::vector<Region> fills;
+  fills.reserve(layers.size());
+  for (const auto& layer : layers) fills.push_back(layer.area.filled());
+
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const auto& layer = layers[i];
+    auto add = [&](std::size_t g, bool new_operation) {
+      auto& group = groups[g];
+      if (new_operation || group.operations.empty()) group.operations.push_back({{}, layer.tool.number});
+      group.operations.back().layers.push_back(i);
+      group.area = group.area.united(layer.area);
+      group.filled = group.filled.united(fills[i]);
+      group.floor = std::min(group.floor, layer.z);
+      last_group = g;
+    };
+    // Continuing the feature the previous layer cut, with the same tool: a step-down (deeper)
+    // or, going back up, a new operation on the same region.
+    if (last_group) {
+      auto& group = groups[*last_group];
+      const auto& prev = layers[group.operations.back().layers.back()];
+      if (prev.tool.number == layer.tool.number && prev.freeform == layer.freeform &&
+          overlap_ratio(fills[i], group.filled) >= kSameFeatureOverlap) {
+        add(*last_group, layer.z > prev.z + 1e-3);
+        continue;
+      }
+    }
+    // A later operation on an earlier feature: same region, not deeper than its floor beyond
+    // the finishing allowance.
+    bool attached = false;
+    for (std::size_t g = groups.size(); g-- > 0;) {
+      auto& group = groups[g];
+      if (group.freeform != layer.freeform) continue;
+      if (layer.z < group.floor - finishing_allowance) continue;
+      if (overlap_ratio(fills[i], group.filled) >= kSameFeatureOverlap) {
+        add(g, true);
+        attached = true;
+        break;
+      }
+    }
+    if (attached) continue;
+    MillingGroup group;
+    group.floor = layer.z;
+    group.freeform = layer.freeform;
+    group.first_workingstep = layer.workingsteps.front();
+    groups.push_back(std::move(group));
+    add(groups.size() - 1, true);
+  }
+  return groups;
+}
+
+}  // namespace ncbridge::feature_recognizer

@@ -1,0 +1,31 @@
+#pragma once
+// Phase 1, merging: the layers of one feature (step-downs of a roughing operation, the passes
+// of a later finishing operation) are gathered into one group, split into operations.
+#include <vector>
+
+#include "cutting_layers.hpp"
+
+namespace ncbridge::feature_recognizer {
+
+struct LayerOperation {
+  std::vector<std::size_t> layers;  // indices into the layer list, in machining order
+  int tool_number = 0;
+};
+
+struct MillingGroup {
+  std::vector<LayerOperation> operations;
+  Region area;        // union of the layers' swept regions
+  Region filled;      // the same with holes closed
+  double floor = 0;   // lowest cutting level
+  bool freeform = false;
+  std::size_t first_workingstep = 0;
+  std::vector<std::size_t> layers() const;
+};
+
+// Two layers belong to one feature when their filled swept regions overlap by at least this
+// ratio (intersection over union).
+inline constexpr double kSameFeatureOverlap = 0.5;
+
+std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance);
+
+}  // namespace ncbridge::feature_recognizer

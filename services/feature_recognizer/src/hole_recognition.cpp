@@ -1,0 +1,102 @@
+#include "hole_recognition.hpp"
+
+#include <cmath>
+
+namespace ncbridge::feature_recognizer {
+
+OperationType hole_operation_type(const setup::Tool& tool, const std::optional<canonical::CycleTag>& cycle,
+                                  int passes) {
+  using T = setup::ToolType;
+  switch (tool.type) {
+    case T::Reamer: return OperationType::Reaming;
+    case T::Tap: return OperationType::Tapping;
+    case T::BoringBar: return OperationType::BoringOperation;
+    case T::CenterDrill:
+    case T::SpotDrill: return OperationType::CenterDrilling;
+    default: break;
+  }
+  if (cycle) {
+    switch (cycle->g_code_x10) {
+      case 730:
+      case 830: return OperationType::MultistepDrilling;
+      case 840:
+      case 841: return OperationType::Tapping;
+      case 850:
+      case 890: return OperationType::Reaming;
+      case 760:
+      case 860:
+      case 870:
+      case 880: return OperationType::BoringOperation;
+      default: break;
+    }
+  }
+  return passes > 1 ? OperationType::MultistepDrilling : OperationType::Drilling;
+}
+
+std::vector<HoleCandidate> recognize_holes(const std::vector<DrillPass>& passes) {
+  struct Cluster {
+    Point2 at;
+    std::vector<const DrillPass*> passes;
+  };
+  std::vector<Cluster> clusters;
+  for (const auto& pass : passes) {
+    Cluster* found = nullptr;
+    for (auto& c : clusters) {
+      if (std::hypot(c.at.x - pass.at.x, c.at.y - pass.at.y) < kSameHoleDistance) found = &c;
+    }
+    if (!found) {
+      clusters.push_back({pass.at, {}});
+      found = &clusters.back();
+    }
+    found->passes.push_back(&pass);
+  }
+
+  std::vector<HoleCandidate> holes;
+  for (const auto& c : clusters) {
+    HoleCandidate hole;
+    hole.at = c.at;
+    hole.first_workingstep = c.passes.front()->workingstep;
+    hole.z_bottom = c.passes.front()->z_bottom;
+    for (const auto* p : c.passes) {
+      hole.diameter = std::max(hole.diameter, p->tool.diameter);
+      if (p->z_bottom <= hole.z_bottom) {
+        hole.z_bottom = p->z_bottom;
+        hole.point_angle = is_hole_making_tool(p->tool.type) ? p->tool.point_angle : 0;
+      }
+    }
+    // One operation per run of passes with the same tool and workingstep sequence.
+    std::vector<std::vector<const DrillPass*>> runs;
+    for (const auto* p : c.passes) {
+      if (runs.empty() || runs.back().back()->tool.number != p->tool.number) runs.emplace_back();
+      runs.back().push_back(p);
+    }
+    for (const auto& run : runs) {
+      RecognizedOperation op;
+      const auto* first = run.front();
+      // Pecks: more than one descending pass of one cycle, or of one uncycled workingstep.
+      int descents = 0;
+      for (const auto* p : run) {
+        if (!p->cycle || !first->cycle || p->cycle->cycle_id == first->cycle->cycle_id) ++descents;
+      }
+      op.type = hole_operation_type(first->tool, first->cycle, descents);
+      op.strategy = Strategy::Plunge;
+      op.tool_number = first->tool.number;
+      op.layers = static_cast<int>(run.size());
+      op.feed = first->feed;
+      op.spindle_rpm = first->spindle_rpm;
+      double previous = run.front()->z_top;
+      double step = 0;
+      for (const auto* p : run) {
+        if (op.workingsteps.empty() || op.workingsteps.back() != p->workingstep) op.workingsteps.push_back(p->workingstep);
+        step = std::max(step, previous - p->z_bottom);
+        previous = p->z_bottom;
+      }
+      op.axial_depth = run.size() > 1 ? step : 0;
+      hole.operations.push_back(std::move(op));
+    }
+    holes.push_back(std::move(hole));
+  }
+  return holes;
+}
+
+}  // namespace ncbridge::feature_recognizer

@@ -1,0 +1,40 @@
+#include "material_model.hpp"
+
+#include <algorithm>
+
+namespace ncbridge::feature_recognizer {
+
+void MaterialModel::add_cut(const Region& area, double floor, std::size_t order) {
+  cuts_.push_back({area, floor, order});
+}
+
+double MaterialModel::height_at(Point2 p, std::size_t order) const {
+  double h = stock_top_;
+  for (const auto& cut : cuts_) {
+    if (cut.order < order && cut.floor < h && cut.area.contains(p)) h = cut.floor;
+  }
+  return h;
+}
+
+double MaterialModel::top_over(const Region& area, double floor, std::size_t order, double share) const {
+  const double total = area.area();
+  if (total <= 0) return stock_top_;
+  std::vector<double> levels{stock_top_};
+  for (const auto& cut : cuts_) {
+    if (cut.order < order && cut.floor > floor + 1e-3 && cut.floor < stock_top_) levels.push_back(cut.floor);
+  }
+  std::sort(levels.begin(), levels.end(), std::greater<>());
+  levels.erase(std::unique(levels.begin(), levels.end(), [](double a, double b) { return std::abs(a - b) < 1e-6; }),
+               levels.end());
+  for (double level : levels) {
+    // Where material still stands at `level`: not inside any earlier cut whose floor is lower.
+    Region standing = area;
+    for (const auto& cut : cuts_) {
+      if (cut.order < order && cut.floor < level - 1e-6) standing = standing.minus(cut.area);
+    }
+    if (standing.area() >= share * total) return level;
+  }
+  return levels.back();
+}
+
+}  // namespace ncbridge::feature_recognizer

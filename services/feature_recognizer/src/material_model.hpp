@@ -1,0 +1,35 @@
+#pragma once
+// The material left by earlier workingsteps, as a height field: the stock's top everywhere,
+// lowered to each earlier feature's floor inside its cutting area. A feature's top is the
+// highest level that material reaches over its own area before it is cut.
+#include <vector>
+
+#include "region.hpp"
+
+namespace ncbridge::feature_recognizer {
+
+class MaterialModel {
+ public:
+  explicit MaterialModel(double stock_top) : stock_top_(stock_top) {}
+
+  // Records that the area `area` was cut down to `floor` by the workingstep `order`.
+  void add_cut(const Region& area, double floor, std::size_t order);
+
+  // Height of the material at `p` before workingstep `order`.
+  double height_at(Point2 p, std::size_t order) const;
+
+  // The highest level that covers at least `share` of `area` before workingstep `order`,
+  // considering only levels above `floor`; the stock top when nothing was cut there.
+  double top_over(const Region& area, double floor, std::size_t order, double share = 0.05) const;
+
+ private:
+  struct Cut {
+    Region area;
+    double floor;
+    std::size_t order;
+  };
+  double stock_top_;
+  std::vector<Cut> cuts_;
+};
+
+}  // namespace ncbridge::feature_recognizer

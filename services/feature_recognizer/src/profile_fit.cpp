@@ -1,0 +1,111 @@
+#include "profile_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace ncbridge::feature_recognizer {
+namespace {
+
+double cross(Point2 o, Point2 a, Point2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+Ring convex_hull(Ring pts) {
+  std::sort(pts.begin(), pts.end(), [](Point2 a, Point2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (pts.size() < 3) return pts;
+  Ring hull(2 * pts.size());
+  std::size_t k = 0;
+  for (const auto& p : pts) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
+    hull[k++] = p;
+  }
+  for (std::size_t i = pts.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+}  // namespace
+
+double perimeter(const Ring& ring) {
+  double total = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const auto& a = ring[i];
+    const auto& b = ring[(i + 1) % ring.size()];
+    total += std::hypot(b.x - a.x, b.y - a.y);
+  }
+  return total;
+}
+
+OrientedRectangle minimum_area_rectangle(const Ring& points) {
+  const Ring hull = convex_hull(points);
+  OrientedRectangle best;
+  double best_area = -1;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const auto& a = hull[i];
+    const auto& b = hull[(i + 1) % hull.size()];
+    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    if (len < 1e-9) continue;
+    const double ux = (b.x - a.x) / len, uy = (b.y - a.y) / len;
+    double umin = 1e300, umax = -1e300, vmin = 1e300, vmax = -1e300;
+    for (const auto& p : hull) {
+      const double u = p.x * ux + p.y * uy, v = -p.x * uy + p.y * ux;
+      umin = std::min(umin, u), umax = std::max(umax, u);
+      vmin = std::min(vmin, v), vmax = std::max(vmax, v);
+    }
+    const double area = (umax - umin) * (vmax - vmin);
+    // Prefer axis-aligned boxes among (nearly) equal areas, so rounding noise does not rotate them.
+    if (best_area < 0 || area < best_area * (1 - 1e-9)) {
+      best_area = area;
+      const double uc = (umin + umax) / 2, vc = (vmin + vmax) / 2;
+      best.center = {uc * ux - vc * uy, uc * uy + vc * ux};
+      double angle = std::atan2(uy, ux) * 180 / std::numbers::pi;
+      double length = umax - umin, width = vmax - vmin;
+      if (width > length) std::swap(length, width), angle += 90;
+      angle = std::fmod(angle + 360, 180);
+      if (angle > 180 - 1e-6) angle = 0;
+      best.length = length;
+      best.width = width;
+      best.angle_deg = angle;
+    }
+  }
+  if (hull.size() < 3 && !hull.empty()) best.center = hull.front();
+  return best;
+}
+
+Profile fit_closed_profile(const Ring& outline, double area) {
+  Profile profile;
+  profile.outline = outline;
+  const auto rect = minimum_area_rectangle(outline);
+  profile.length = rect.length;
+  profile.width = rect.width;
+  profile.angle_deg = rect.angle_deg;
+  if (rect.length <= 0 || rect.width <= 0) {
+    profile.shape = ProfileShape::GeneralClosed;
+    return profile;
+  }
+  const double circle_area = std::numbers::pi * rect.length * rect.width / 4;
+  if (rect.width > 0.98 * rect.length && std::abs(area - circle_area) < 0.02 * circle_area) {
+    profile.shape = ProfileShape::Circular;
+    profile.diameter = (rect.length + rect.width) / 2;
+    profile.angle_deg = 0;
+    return profile;
+  }
+  // A rounded rectangle lacks (4 - pi) r^2 of its enclosing rectangle.
+  const double missing = std::max(0.0, rect.length * rect.width - area);
+  const double r = std::sqrt(missing / (4 - std::numbers::pi));
+  if (r <= rect.width / 2 + 1e-6) {
+    // The radius matches the area by construction; the perimeter confirms the shape.
+    const double expected_perimeter = 2 * (rect.length + rect.width) - (8 - 2 * std::numbers::pi) * r;
+    if (std::abs(perimeter(outline) - expected_perimeter) < 0.02 * expected_perimeter) {
+      profile.shape = ProfileShape::Rectangular;
+      profile.corner_radius = r < 0.05 ? 0 : r;
+      return profile;
+    }
+  }
+  profile.shape = ProfileShape::GeneralClosed;
+  return profile;
+}
+
+}  // namespace ncbridge::feature_recognizer

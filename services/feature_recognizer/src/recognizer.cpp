@@ -1,0 +1,111 @@
+#include "ncbridge/feature_recognizer/recognizer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "cutting_layers.hpp"
+#include "feature_classification.hpp"
+#include "feature_grouping.hpp"
+#include "hole_recognition.hpp"
+#include "material_model.hpp"
+#include "swept_area.hpp"
+
+namespace ncbridge::feature_recognizer {
+namespace {
+
+// Step-down layers repeat the same XY path: their swept region is computed once.
+using PathKey = std::tuple<long long, std::vector<long long>>;
+
+PathKey path_key(const Layer& layer) {
+  std::vector<long long> coords;
+  for (const auto& path : layer.paths) {
+    for (const auto& p : path) {
+      coords.push_back(std::llround(p.x * 1e4));
+      coords.push_back(std::llround(p.y * 1e4));
+    }
+    coords.push_back(-(1LL << 62));  // path separator
+  }
+  return {std::llround(layer.tool.diameter * 1e4), std::move(coords)};
+}
+
+void compute_layer_areas(std::vector<Layer>& layers, double tolerance) {
+  std::map<PathKey, Region> cache;
+  for (auto& layer : layers) {
+    auto key = path_key(layer);
+    auto it = cache.find(key);
+    if (it == cache.end()) {
+      it = cache.emplace(std::move(key), swept_area(layer.xy_paths(), layer.tool.diameter / 2, tolerance)).first;
+    }
+    layer.area = it->second;
+    if (auto box = layer.area.bbox()) layer.extent = *box;
+  }
+}
+
+Region disk(Point2 c, double diameter, double tolerance) { return Region::polygon(stadium(c, c, diameter / 2, tolerance)); }
+
+struct Pending {
+  std::size_t order;
+  ClassifiedFeature item;
+  Region cut;           // what it removes, for the material model
+  bool is_hole = false;
+  Point2 hole_at;
+};
+
+}  // namespace
+
+std::vector<RecognizedFeature> recognize(const std::vector<ToolpathWorkingstep>& workingsteps,
+                                         const setup::Stock& stock, const Options& options) {
+  auto analysis = analyse_cutter_locations(workingsteps, options.chord_tolerance);
+  compute_layer_areas(analysis.layers, options.chord_tolerance);
+  const auto groups = group_layers(analysis.layers, options.finishing_allowance);
+  const auto part = find_part_envelope(groups, stock, options.chord_tolerance);
+
+  std::vector<Pending> pending;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (auto c = classify_group(g, groups, analysis.layers, part)) {
+      Pending p{c->order, std::move(*c), groups[g].area};
+      pending.push_back(std::move(p));
+    }
+  }
+  for (const auto& hole : recognize_holes(analysis.drill_passes)) {
+    if (!part.outline.contains(hole.at)) continue;  // drilling in the air beside the part
+    ClassifiedFeature c;
+    auto& f = c.feature;
+    f.type = FeatureType::RoundHole;
+    f.x = hole.at.x, f.y = hole.at.y;
+    f.diameter = hole.diameter;
+    f.profile.shape = ProfileShape::Circular;
+    f.profile.diameter = hole.diameter;
+    // The drill's point breaking out below the part's bottom makes the hole through.
+    if (hole.z_bottom < part.bottom_z - 1e-3) {
+      f.bottom = BottomCondition::Through;
+      f.bottom_z = part.bottom_z;
+    } else {
+      f.bottom_z = hole.z_bottom;
+      f.bottom = hole.point_angle > 0 ? BottomCondition::Conical : BottomCondition::Planar;
+      f.bottom_angle_deg = hole.point_angle;
+    }
+    f.operations = hole.operations;
+    c.order = hole.first_workingstep;
+    Pending p{c.order, c, disk(hole.at, hole.diameter, options.chord_tolerance)};
+    p.is_hole = true;
+    p.hole_at = hole.at;
+    pending.push_back(std::move(p));
+  }
+  std::stable_sort(pending.begin(), pending.end(), [](const Pending& a, const Pending& b) { return a.order < b.order; });
+
+  MaterialModel material(stock.max[2]);
+  std::vector<RecognizedFeature> out;
+  for (auto& p : pending) {
+    auto& f = p.item.feature;
+    f.top_z = p.is_hole ? material.height_at(p.hole_at, p.order)
+                        : material.top_over(p.item.footprint, f.bottom_z, p.order);
+    material.add_cut(p.cut, f.bottom_z, p.order);
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+}  // namespace ncbridge::feature_recognizer

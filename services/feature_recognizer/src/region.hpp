@@ -1,0 +1,53 @@
+#pragma once
+// A planar point set (the cutting area of a tool, the stock's outline, ...) as an immutable
+// value. Boolean operations are exact (CGAL, exact constructions); only region.cpp sees CGAL.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "ncbridge/feature_recognizer/feature.hpp"
+
+namespace ncbridge::feature_recognizer {
+
+using Ring = std::vector<Point2>;  // a closed polygon, last point not repeated
+
+struct Box2 {
+  double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+  double width() const { return xmax - xmin; }
+  double height() const { return ymax - ymin; }
+};
+
+struct PolygonWithHoles {
+  Ring outer;               // counter-clockwise
+  std::vector<Ring> holes;  // clockwise
+};
+
+class Region {
+ public:
+  Region();  // empty
+  static Region polygon(const Ring& ring);  // a simple polygon, either orientation
+  static Region rectangle(const Box2& box);
+  static Region union_of(const std::vector<Ring>& polygons);  // simple polygons
+
+  Region united(const Region& other) const;
+  Region intersected(const Region& other) const;
+  Region minus(const Region& other) const;
+  Region filled() const;  // every hole closed
+
+  bool empty() const;
+  double area() const;
+  std::optional<Box2> bbox() const;
+  bool contains(Point2 p) const;  // interior or boundary
+  std::vector<Region> components() const;
+  std::vector<PolygonWithHoles> polygons() const;  // boundaries, converted to double
+
+ private:
+  struct Impl;
+  explicit Region(std::shared_ptr<const Impl> impl);
+  std::shared_ptr<const Impl> impl_;
+};
+
+// area(a ∩ b) / area(a ∪ b), 0 when both are empty.
+double overlap_ratio(const Region& a, const Region& b);
+
+}  // namespace ncbridge::feature_recognizer

@@ -1,0 +1,148 @@
+#include "ncbridge/feature_recognizer/scoring.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "ncbridge/common/error.hpp"
+
+namespace ncbridge::feature_recognizer {
+namespace {
+
+std::optional<FeatureType> feature_type_from(const std::string& name) {
+  static const std::pair<const char*, FeatureType> kNames[] = {
+      {"planar_face", FeatureType::PlanarFace}, {"round_hole", FeatureType::RoundHole},
+      {"closed_pocket", FeatureType::ClosedPocket}, {"open_pocket", FeatureType::OpenPocket},
+      {"slot", FeatureType::Slot}, {"step", FeatureType::Step},
+      {"general_outside_profile", FeatureType::GeneralOutsideProfile}, {"region", FeatureType::Region}};
+  for (const auto& [n, t] : kNames) {
+    if (name == n) return t;
+  }
+  return std::nullopt;
+}
+
+double number(const nlohmann::json& j, const char* key, const std::string& file, const std::string& id) {
+  if (!j.contains(key) || !j[key].is_number()) {
+    throw InputError({file, 0, 0}, "feature '" + id + "' has no number '" + key + "'");
+  }
+  return j[key].get<double>();
+}
+
+TruthFeature read_feature(const nlohmann::json& j, const std::string& file) {
+  TruthFeature t;
+  t.id = j.value("id", std::string{});
+  const std::string type = j.value("type", std::string{});
+  const auto ft = feature_type_from(type);
+  if (!ft) throw InputError({file, 0, 0}, "feature '" + t.id + "' has unknown type '" + type + "'");
+  t.type = *ft;
+  const auto& xy = j.contains("center_xy") ? j["center_xy"] : j.value("position", nlohmann::json{});
+  if (!xy.is_array() || xy.size() < 2) throw InputError({file, 0, 0}, "feature '" + t.id + "' has no position");
+  t.x = xy[0].get<double>();
+  t.y = xy[1].get<double>();
+  t.top_z = number(j, "top_z", file, t.id);
+  t.bottom_z = number(j, "bottom_z", file, t.id);
+  if (j.contains("dimensions") && j["dimensions"].contains("diameter") && t.type == FeatureType::RoundHole) {
+    t.diameter = j["dimensions"]["diameter"].get<double>();
+  }
+  switch (t.type) {
+    case FeatureType::RoundHole:
+    case FeatureType::ClosedPocket: t.closed = true; break;
+    case FeatureType::Slot: {
+      bool open = j.value("shape", std::string{}).find("through") != std::string::npos;
+      if (j.contains("end_conditions")) {
+        for (const auto& e : j["end_conditions"]) open = open || e.get<std::string>() == "open";
+      }
+      t.closed = !open;
+      break;
+    }
+    default: t.closed = false;
+  }
+  return t;
+}
+
+}  // namespace
+
+std::vector<TruthFeature> read_truth(const std::filesystem::path& file, const std::string& program) {
+  std::ifstream in(file);
+  if (!in) throw InputError({file.string(), 0, 0}, "cannot open the truth file");
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError({file.string(), 0, 0}, std::string("not valid JSON: ") + e.what());
+  }
+  const nlohmann::json* list = nullptr;
+  if (!program.empty()) {
+    if (!root.contains(program) || !root[program].contains("features")) {
+      throw InputError({file.string(), 0, 0}, "no features for program '" + program + "'");
+    }
+    list = &root[program]["features"];
+  } else {
+    if (!root.contains("features")) throw InputError({file.string(), 0, 0}, "no \"features\" list");
+    list = &root["features"];
+  }
+  std::vector<TruthFeature> out;
+  try {
+    for (const auto& j : *list) out.push_back(read_feature(j, file.string()));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError({file.string(), 0, 0}, std::string("malformed feature: ") + e.what());
+  }
+  return out;
+}
+
+double TypeScore::precision() const { return recognized > 0 ? static_cast<double>(matched) / recognized : (truth == 0 ? 1 : 0); }
+double TypeScore::recall() const { return truth > 0 ? static_cast<double>(matched) / truth : (recognized == 0 ? 1 : 0); }
+double TypeScore::f1() const {
+  const double p = precision(), r = recall();
+  return p + r > 0 ? 2 * p * r / (p + r) : 0;
+}
+
+double Score::mean_position_error() const {
+  if (matches.empty()) return 0;
+  double sum = 0;
+  for (const auto& m : matches) sum += m.position_error;
+  return sum / static_cast<double>(matches.size());
+}
+
+Score score(const std::vector<RecognizedFeature>& recognized, const std::vector<TruthFeature>& truth) {
+  Score s;
+  for (const auto& t : truth) ++s.per_type[t.type].truth;
+  for (const auto& r : recognized) ++s.per_type[r.type].recognized;
+
+  struct Candidate {
+    double error;
+    std::size_t t, r;
+  };
+  std::vector<Candidate> candidates;
+  for (std::size_t ti = 0; ti < truth.size(); ++ti) {
+    const auto& t = truth[ti];
+    for (std::size_t ri = 0; ri < recognized.size(); ++ri) {
+      const auto& r = recognized[ri];
+      if (r.type != t.type) continue;
+      const double error = std::hypot(r.x - t.x, r.y - t.y);
+      if (error > (t.closed ? 1.0 : 5.0)) continue;
+      if (std::abs(r.top_z - t.top_z) > 0.2 || std::abs(r.bottom_z - t.bottom_z) > 0.2) continue;
+      if (t.diameter && std::abs(r.diameter - *t.diameter) > 0.05) continue;
+      candidates.push_back({error, ti, ri});
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.error < b.error; });
+  std::vector<bool> t_used(truth.size()), r_used(recognized.size());
+  for (const auto& c : candidates) {
+    if (t_used[c.t] || r_used[c.r]) continue;
+    t_used[c.t] = r_used[c.r] = true;
+    s.matches.push_back({c.t, c.r, c.error});
+    ++s.per_type[truth[c.t].type].matched;
+  }
+  for (const auto& [type, ts] : s.per_type) {
+    s.overall.truth += ts.truth;
+    s.overall.recognized += ts.recognized;
+    s.overall.matched += ts.matched;
+  }
+  return s;
+}
+
+}  // namespace ncbridge::feature_recognizer
