@@ -23,6 +23,7 @@ struct Source {
   std::uint32_t file = 0;       // index into the stream's file table (Sink::source_file)
   std::uint32_t line = 0;       // 1-based line of the block; 0 = made by the interpreter itself
   std::int64_t n_number = -1;   // the block's N word, -1 when it has none
+  std::uint8_t n_digits = 0;    // digits of the N word as written (keeps leading zeros), 0 = natural
 };
 
 // For calls produced by a canned cycle (G73, G81..G89): which cycle made them, with what.

@@ -19,6 +19,9 @@ struct Options {
   Dialect dialect = Dialect::Rs274Ngc;
   setup::ToolList tools;                                  // lengths/diameters in mm
   std::vector<std::filesystem::path> subroutine_path;    // where `o<name> call` files are found
+  // LinuxCNC reports a program that ends without M2/M30 or a closing `%` as an error, after
+  // running it. Off: the end of the file ends the program quietly.
+  bool require_program_end = true;
 };
 
 // Interprets the program in `program`, streaming calls into `sink` (source_file, call..., end).

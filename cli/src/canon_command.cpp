@@ -1,0 +1,80 @@
+// `ncbridge canon PROGRAM`: the interpreter's canonical calls, printed in LinuxCNC rs274's format.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "ncbridge/common/error.hpp"
+#include "ncbridge/interpreter/canon_printer.hpp"
+#include "ncbridge/interpreter/interpreter.hpp"
+#include "ncbridge/setup/tool_list.hpp"
+
+namespace ncbridge::cli {
+
+namespace {
+
+struct CanonArguments {
+  std::string program;
+  std::string tool_table;
+  std::string tool_table_units = "mm";
+  std::string tools;
+  std::string subroutine_path;
+};
+
+std::vector<std::filesystem::path> split_path(const std::string& text) {
+  std::vector<std::filesystem::path> dirs;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, ':')) {
+    if (!part.empty()) dirs.emplace_back(part);
+  }
+  return dirs;
+}
+
+int run_canon(const CanonArguments& args) {
+  interpreter::Options options;
+  try {
+    if (!args.tool_table.empty()) {
+      auto units = args.tool_table_units == "inch" ? setup::LengthUnits::Inches : setup::LengthUnits::Millimeters;
+      options.tools = setup::read_linuxcnc_tool_table(args.tool_table, units);
+    } else if (!args.tools.empty()) {
+      options.tools = setup::read_tool_list(args.tools);
+    }
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+  options.subroutine_path = split_path(args.subroutine_path);
+  interpreter::CanonPrinter printer(stdout);
+  int status = 0;
+  try {
+    interpreter::interpret_file(args.program, options, printer);
+  } catch (const InputError& e) {
+    printer.flush();
+    std::fprintf(stderr, "%s\n", e.what());
+    status = 1;
+  }
+  // rs274 resets the interpreter when it stops, whatever the reason.
+  printer.print_driver_reset();
+  printer.flush();
+  return status;
+}
+
+}  // namespace
+
+void add_canon_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<CanonArguments>();
+  CLI::App* cmd = app.add_subcommand("canon", "Interpret a program and print its canonical calls (LinuxCNC rs274 format)");
+  cmd->add_option("program", args->program, "RS274/NGC program")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--tool-table", args->tool_table, "LinuxCNC tool table (.tbl)")->check(CLI::ExistingFile);
+  cmd->add_option("--tool-table-units", args->tool_table_units, "Units of the tool table values")
+      ->check(CLI::IsMember({"mm", "inch"}));
+  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML)")->check(CLI::ExistingFile);
+  cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
+  cmd->callback([args, &exit_code]() { exit_code = run_canon(*args); });
+}
+
+}  // namespace ncbridge::cli

@@ -1,0 +1,408 @@
+#include "control_flow.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "expression.hpp"
+#include "ncbridge/common/error.hpp"
+#include "rs274ngc/reader.hpp"
+
+namespace ncbridge::interpreter {
+
+using namespace canonical;
+
+namespace {
+constexpr std::uint32_t bit(StatementKind k) { return 1u << static_cast<unsigned>(k); }
+constexpr int kMaxCallDepth = 200;
+
+bool iequals_prefix(std::string_view text, std::string_view prefix) {
+  if (text.size() < prefix.size()) return false;
+  for (std::size_t i = 0; i < prefix.size(); ++i) {
+    char c = text[i];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (c != prefix[i]) return false;
+  }
+  return true;
+}
+}  // namespace
+
+ControlFlowRunner::ControlFlowRunner(const Options& options, Sink& sink)
+    : options_(options), sink_(sink), executor_(options, params_, sink) {
+  params_.set_computed(&executor_);
+}
+
+void ControlFlowRunner::fail(std::uint32_t column, const std::string& message) const {
+  throw InputError({file_name(), line_, column}, message);
+}
+
+double ControlFlowRunner::eval(ExprRef ref) const { return evaluate(block_, ref, params_, file_name()); }
+
+std::uint32_t ControlFlowRunner::open_file(const std::filesystem::path& path) {
+  for (std::uint32_t i = 0; i < files_.size(); ++i) {
+    if (files_[i].name == path.string()) {
+      if (!files_[i].source) files_[i].source = open_text_file(path);
+      return i;
+    }
+  }
+  auto source = open_text_file(path);
+  if (!source) return UINT32_MAX;
+  files_.push_back(File{path.string(), std::move(source)});
+  auto index = static_cast<std::uint32_t>(files_.size() - 1);
+  sink_.source_file(index, files_.back().name);
+  return index;
+}
+
+bool ControlFlowRunner::read_line(bool control_only) {
+  TextSource& src = *files_[current_file_].source;
+  line_offset_ = src.tell();
+  std::string_view text;
+  if (!src.next_line(text)) return false;
+  next_offset_ = src.tell();
+  ++line_;
+  rs274ngc::read_block(text, line_, file_name(), block_, control_only);
+  return true;
+}
+
+void ControlFlowRunner::seek(std::uint32_t file, std::uint64_t offset, std::uint32_t line_before) {
+  current_file_ = file;
+  if (!files_[file].source) {
+    files_[file].source = open_text_file(files_[file].name);
+    if (!files_[file].source) fail(0, "Unable to reopen file " + files_[file].name);
+  }
+  files_[file].source->seek(offset);
+  line_ = line_before;
+}
+
+std::string ControlFlowRunner::label_of(const Block& block) const {
+  if (block.statement.label_is_name) return std::string(block.label());
+  return std::to_string(std::llround(block.statement.label_number));
+}
+
+bool ControlFlowRunner::skip_to(const std::string& label, std::uint32_t kinds) {
+  while (read_line(true)) {
+    if (block_.statement.kind == StatementKind::None) continue;
+    if ((bit(block_.statement.kind) & kinds) == 0) continue;
+    if (label_of(block_) == label) return true;
+  }
+  return false;
+}
+
+void ControlFlowRunner::run(std::unique_ptr<TextSource> source, const std::string& name) {
+  files_.push_back(File{name, std::move(source)});
+  sink_.source_file(0, name);
+  main_directory_ = std::filesystem::path(name).parent_path();
+  executor_.set_source(Source{0, 0, -1, 0});
+  executor_.start();
+  for (;;) {
+    if (!read_line(false)) {
+      if (!frames_.empty()) fail(0, "File ended inside subroutine (missing endsub)");
+      if (options_.require_program_end) {
+        throw InputError({file_name(), line_, 0}, "File ended with no percent sign or program end");
+      }
+      return;
+    }
+    if (run_block()) return;
+  }
+}
+
+bool ControlFlowRunner::run_block() {
+  if (block_.percent) {
+    if (!seen_content_ && current_file_ == 0) {
+      percent_mode_ = true;
+      seen_content_ = true;
+      return false;
+    }
+    if (percent_mode_ && current_file_ == 0) {
+      // LinuxCNC prints FINISH() here; the canonical model has no such call yet.
+      return true;
+    }
+    return false;
+  }
+  if (block_.words.empty() && block_.assignments.empty() && block_.comments.empty() &&
+      block_.statement.kind == StatementKind::None) {
+    return false;
+  }
+  seen_content_ = true;
+  Source source{current_file_, line_, block_.n_number, block_.n_digits};
+  executor_.set_source(source);
+  if (block_.statement.kind != StatementKind::None) return run_statement();
+
+  // Evaluate every word and assignment with the parameters as they were before the line.
+  values_.resize(block_.words.size());
+  for (std::size_t i = 0; i < block_.words.size(); ++i) values_[i] = eval(block_.words[i].value);
+  assignment_values_.clear();
+  for (const Assignment& a : block_.assignments) assignment_values_.emplace_back(a.target, eval(a.value));
+  for (const auto& [target, value] : assignment_values_) {
+    const ExprNode& node = block_.nodes[target];
+    if (node.op == ExprOp::NamedParameter) {
+      params_.set_named(block_.name(node.name_begin, node.name_length), value);
+    } else {
+      params_.set_numbered(parameter_number(block_, target, params_, file_name()), value);
+    }
+  }
+  assemble_command(block_, values_.data(), file_name(), command_);
+
+  // (DEBUG,...) prints a message with parameter values substituted; other active comments
+  // (PRINT, LOG...) have no canonical call.
+  if (!command_.comment.empty() && !command_.comment_is_message) {
+    std::string_view text = command_.comment;
+    while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+    if (iequals_prefix(text, "debug,")) {
+      message_text_.clear();
+      std::string_view rest = text.substr(6);
+      for (std::size_t i = 0; i < rest.size(); ++i) {
+        if (rest[i] == '#') {
+          std::size_t j = i + 1;
+          std::optional<double> value;
+          if (j < rest.size() && rest[j] == '<') {
+            std::size_t close = rest.find('>', j);
+            if (close != std::string_view::npos) {
+              std::string name;
+              for (char c : rest.substr(j + 1, close - j - 1)) {
+                if (c == ' ') continue;
+                name.push_back((c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c);
+              }
+              value = params_.named(name);
+              if (value) i = close;
+            }
+          } else {
+            int number = 0;
+            while (j < rest.size() && rest[j] >= '0' && rest[j] <= '9' && number < 100000) {
+              number = number * 10 + (rest[j] - '0');
+              ++j;
+            }
+            if (j > i + 1 && Parameters::valid_number(number)) {
+              value = params_.numbered(number);
+              i = j - 1;
+            }
+          }
+          if (value) {
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "%f", *value);
+            message_text_ += buf;
+            continue;
+          }
+        }
+        message_text_.push_back(rest[i]);
+      }
+      command_.comment = message_text_;
+      command_.comment_is_message = true;
+    } else if (iequals_prefix(text, "print,") || iequals_prefix(text, "log,") ||
+               iequals_prefix(text, "logopen,") || iequals_prefix(text, "logappend,") ||
+               iequals_prefix(text, "logclose")) {
+      command_.comment = {};
+    }
+  }
+  if (executor_.execute(command_, source, file_name())) {
+    finish_after_end();
+    return true;
+  }
+  return false;
+}
+
+void ControlFlowRunner::finish_after_end() {
+  if (!percent_mode_) return;
+  // LinuxCNC looks for the closing percent sign after M2/M30.
+  TextSource& src = *files_[current_file_].source;
+  std::string_view text;
+  while (src.next_line(text)) {
+    std::size_t i = 0;
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    if (i < text.size() && text[i] == '%') return;
+  }
+  executor_.emit(Comment{"interpreter: percent sign missing from end of file"});
+}
+
+bool ControlFlowRunner::run_statement() {
+  const Statement& st = block_.statement;
+  const std::string label = label_of(block_);
+  const std::uint32_t col = st.column;
+  switch (st.kind) {
+    case StatementKind::Sub: {
+      if (subs_.count(label) != 0) fail(col, "Redefining sub o" + label);
+      subs_[label] = SubDefinition{current_file_, next_offset_, line_};
+      if (!skip_to(label, bit(StatementKind::EndSub))) fail(col, "Subroutine o" + label + " has no endsub");
+      return false;
+    }
+    case StatementKind::EndSub:
+    case StatementKind::Return: {
+      if (frames_.empty()) fail(col, "Not in a subroutine definition: o" + label);
+      if (st.condition != kNoExpr) {
+        params_.set_named("_value", eval(st.condition));
+        params_.set_named("_value_returned", 1.0);
+      }
+      do_return();
+      return false;
+    }
+    case StatementKind::Call: {
+      std::vector<double> args;
+      args.reserve(st.arguments.size());
+      for (ExprRef a : st.arguments) args.push_back(eval(a));
+      if (args.size() > static_cast<std::size_t>(Parameters::kLocalCount)) fail(col, "Too many arguments in call");
+      if (frames_.size() >= kMaxCallDepth) fail(col, "Too many nested subroutine calls");
+      frames_.push_back(Frame{current_file_, next_offset_, line_, loops_.size()});
+      params_.push_scope();
+      for (int i = 1; i <= Parameters::kLocalCount; ++i) {
+        params_.set_numbered(i, static_cast<std::size_t>(i) <= args.size() ? args[static_cast<std::size_t>(i - 1)] : 0.0);
+      }
+      params_.set_named("_value", 0.0);
+      params_.set_named("_value_returned", 0.0);
+      call(label);
+      return false;
+    }
+    case StatementKind::If: {
+      bool taken = eval(st.condition) != 0.0;
+      while (!taken) {
+        if (!skip_to(label, bit(StatementKind::ElseIf) | bit(StatementKind::Else) | bit(StatementKind::EndIf))) {
+          fail(col, "No matching endif for o" + label + " if");
+        }
+        StatementKind k = block_.statement.kind;
+        if (k == StatementKind::ElseIf) {
+          taken = eval(block_.statement.condition) != 0.0;
+        } else {
+          break;  // else: run its branch; endif: done
+        }
+      }
+      return false;
+    }
+    case StatementKind::ElseIf:
+    case StatementKind::Else:
+      // reached by running the branch before it: jump to the endif
+      if (!skip_to(label, bit(StatementKind::EndIf))) fail(col, "No matching endif for o" + label);
+      return false;
+    case StatementKind::EndIf:
+      return false;
+    case StatementKind::Do: {
+      if (loops_.empty() || loops_.back().label != label || loops_.back().offset != line_offset_) {
+        loops_.push_back(Loop{label, StatementKind::Do, current_file_, line_offset_, next_offset_, line_, 0});
+      }
+      return false;
+    }
+    case StatementKind::While: {
+      bool top_is_this = !loops_.empty() && loops_.back().label == label;
+      if (top_is_this && loops_.back().kind == StatementKind::Do) {
+        // the end of a do-while loop
+        if (eval(st.condition) != 0.0) {
+          const Loop& l = loops_.back();
+          seek(l.file, l.after_offset, l.line);
+        } else {
+          loops_.pop_back();
+        }
+        return false;
+      }
+      bool again = top_is_this && loops_.back().offset == line_offset_ && loops_.back().file == current_file_;
+      if (eval(st.condition) != 0.0) {
+        if (!again) loops_.push_back(Loop{label, StatementKind::While, current_file_, line_offset_, next_offset_, line_, 0});
+      } else {
+        if (again) loops_.pop_back();
+        if (!skip_to(label, bit(StatementKind::EndWhile))) fail(col, "No matching endwhile for o" + label + " while");
+      }
+      return false;
+    }
+    case StatementKind::EndWhile: {
+      if (loops_.empty() || loops_.back().label != label || loops_.back().kind != StatementKind::While) {
+        fail(col, "endwhile without a matching while for o" + label);
+      }
+      const Loop& l = loops_.back();
+      seek(l.file, l.offset, l.line - 1);
+      return false;
+    }
+    case StatementKind::Repeat: {
+      int count = static_cast<int>(std::lround(eval(st.condition)));
+      if (count > 0) {
+        loops_.push_back(Loop{label, StatementKind::Repeat, current_file_, line_offset_, next_offset_, line_, count});
+      } else if (!skip_to(label, bit(StatementKind::EndRepeat))) {
+        fail(col, "No matching endrepeat for o" + label + " repeat");
+      }
+      return false;
+    }
+    case StatementKind::EndRepeat: {
+      if (loops_.empty() || loops_.back().label != label || loops_.back().kind != StatementKind::Repeat) {
+        fail(col, "endrepeat without a matching repeat for o" + label);
+      }
+      Loop& l = loops_.back();
+      if (--l.remaining > 0) {
+        seek(l.file, l.after_offset, l.line);
+      } else {
+        loops_.pop_back();
+      }
+      return false;
+    }
+    case StatementKind::Break:
+    case StatementKind::Continue: {
+      if (loops_.empty() || loops_.back().label != label) fail(col, "break/continue outside loop o" + label);
+      Loop l = loops_.back();
+      bool brk = st.kind == StatementKind::Break;
+      if (l.kind == StatementKind::While) {
+        if (brk) {
+          loops_.pop_back();
+          if (!skip_to(label, bit(StatementKind::EndWhile))) fail(col, "No matching endwhile for o" + label);
+        } else {
+          seek(l.file, l.offset, l.line - 1);
+        }
+      } else if (l.kind == StatementKind::Do) {
+        if (!skip_to(label, bit(StatementKind::While))) fail(col, "No matching while for o" + label + " do");
+        if (brk) {
+          loops_.pop_back();
+        } else {
+          return run_statement();  // evaluate the do-while condition
+        }
+      } else {
+        if (!skip_to(label, bit(StatementKind::EndRepeat))) fail(col, "No matching endrepeat for o" + label);
+        if (brk) {
+          loops_.pop_back();
+        } else {
+          return run_statement();
+        }
+      }
+      return false;
+    }
+    default:
+      fail(col, "This control statement is not supported in RS274/NGC");
+  }
+}
+
+void ControlFlowRunner::call(const std::string& label) {
+  auto it = subs_.find(label);
+  if (it != subs_.end()) {
+    seek(it->second.file, it->second.after_offset, it->second.line);
+    return;
+  }
+  // A file named for the subroutine, in the subroutine path or beside the main program.
+  std::vector<std::filesystem::path> dirs = options_.subroutine_path;
+  dirs.push_back(main_directory_.empty() ? std::filesystem::path(".") : main_directory_);
+  for (const auto& dir : dirs) {
+    std::filesystem::path candidate = dir / (label + ".ngc");
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(candidate, ec)) continue;
+    std::uint32_t index = open_file(candidate);
+    if (index == UINT32_MAX) continue;
+    std::uint32_t caller_line = line_;
+    std::uint32_t caller_file = current_file_;
+    seek(index, 0, 0);
+    if (!skip_to(label, bit(StatementKind::Sub))) {
+      current_file_ = caller_file;
+      line_ = caller_line;
+      fail(0, "Subroutine file " + candidate.string() + " does not define o<" + label + "> sub");
+    }
+    subs_[label] = SubDefinition{current_file_, next_offset_, line_};
+    return;
+  }
+  // Defined further down in this file: read ahead to it.
+  std::uint32_t caller_line = line_;
+  if (!skip_to(label, bit(StatementKind::Sub))) {
+    line_ = caller_line;
+    throw InputError({file_name(), caller_line, 0}, "Unable to find subroutine o" + label);
+  }
+  subs_[label] = SubDefinition{current_file_, next_offset_, line_};
+}
+
+void ControlFlowRunner::do_return() {
+  Frame f = frames_.back();
+  frames_.pop_back();
+  loops_.resize(f.loop_base);
+  params_.pop_scope();
+  seek(f.return_file, f.return_offset, f.return_line);
+}
+
+}  // namespace ncbridge::interpreter

@@ -1,0 +1,331 @@
+#include "executor.hpp"
+
+#include <cmath>
+
+#include "ncbridge/common/error.hpp"
+
+namespace ncbridge::interpreter {
+
+using namespace canonical;
+
+Executor::Executor(const Options& options, Parameters& parameters, Sink& sink)
+    : options_(options), params_(parameters), sink_(sink) {}
+
+Executor::~Executor() = default;
+
+void Executor::fail(std::uint32_t column, const std::string& message) const {
+  throw InputError({file_ ? *file_ : std::string(), line_, column}, message);
+}
+
+
+void Executor::emit(Data data) {
+  Call call{std::move(data), source_, cycle_tag_};
+  sink_.call(call);
+}
+
+void Executor::flush() {}
+
+Pose Executor::to_units(const Pose& mm) const {
+  double k = s_.mm_per_unit();
+  return Pose{mm.x / k, mm.y / k, mm.z / k, mm.a, mm.b, mm.c, mm.u / k, mm.v / k, mm.w / k};
+}
+
+std::optional<double> Executor::computed(std::string_view name) const {
+  const Pose& p = s_.position;
+  if (name == "_x") return p.x;
+  if (name == "_y") return p.y;
+  if (name == "_z") return p.z;
+  if (name == "_a") return p.a;
+  if (name == "_b") return p.b;
+  if (name == "_c") return p.c;
+  if (name == "_u") return p.u;
+  if (name == "_v") return p.v;
+  if (name == "_w") return p.w;
+  if (name == "_line") return static_cast<double>(line_);
+  if (name == "_metric") return s_.units == Units::Millimeters ? 1.0 : 0.0;
+  if (name == "_imperial") return s_.units == Units::Inches ? 1.0 : 0.0;
+  if (name == "_absolute") return s_.distance == DistanceMode::Absolute ? 1.0 : 0.0;
+  if (name == "_incremental") return s_.distance == DistanceMode::Incremental ? 1.0 : 0.0;
+  if (name == "_feed") return s_.feed_rate;
+  if (name == "_rpm") return s_.speed;
+  if (name == "_current_tool") return static_cast<double>(s_.tool_in_spindle);
+  if (name == "_selected_tool") return static_cast<double>(s_.selected_tool);
+  if (name == "_motion_mode") return s_.motion / 10.0;
+  if (name == "_coord_system") return 530.0 + 10.0 * s_.coord_system;
+  if (name == "_task") return 0.0;
+  return std::nullopt;
+}
+
+void Executor::start() {
+  s_ = ModalState{};
+  // coordinate systems and G92 from the parameters (all zero without a parameter file)
+  write_parameters();
+  emit(UseLengthUnits{s_.units});
+  emit_g5x();
+  emit_g92();
+  emit(SetXyRotation{s_.rotation_deg});
+  emit(SetFeedReference{FeedReference::Xyz});
+  emit(OnReset{});
+}
+
+// ---------------------------------------------------------------------------------------------
+// One block, in the NIST order of execution (LinuxCNC execute_block / convert_m / convert_g).
+bool Executor::execute(const BlockCommand& b, const Source& source, const std::string& file) {
+  source_ = source;
+  file_ = &file;
+  line_ = b.line;
+  cycle_tag_.reset();
+  check_block(b);
+
+  // STEP 1: comment or message
+  if (!b.comment.empty() || b.comment_is_message) do_comment(b);
+  // STEP 2: spindle mode, feed mode, F, S, T
+  if (b.g[kGSpindleMode] != -1) do_spindle_mode(b, b.g[kGSpindleMode]);
+  if (b.g[kGFeedMode] != -1) do_feed_mode(b.g[kGFeedMode]);
+  if (b.has('f') && s_.feed_mode != FeedMode::InverseTime) do_feed_rate(b);
+  if (b.has('s')) do_speed(b);
+  if (b.has('t')) do_tool_select(b);
+  // STEP 3: M codes other than stops
+  if (b.m[kMToolChange] != -1) do_tool_change(b);
+  if (b.m[kMSpindle] != -1) do_spindle(b);
+  if (b.m[kMCoolant] != -1) do_coolant(b);
+  if (b.m[kMOverride] != -1) do_overrides(b);
+  // STEP 4: G codes
+  int g0 = b.g[kGNonModal];
+  if (g0 == 40) do_dwell(b);
+  if (b.g[kGPlane] != -1) do_plane(b.g[kGPlane]);
+  if (b.g[kGUnits] != -1) do_units(b.g[kGUnits]);
+  if (b.g[kGCutterComp] != -1) do_cutter_comp(b, b.g[kGCutterComp]);
+  if (b.g[kGToolLength] != -1) do_tool_length_offset(b, b.g[kGToolLength]);
+  if (b.g[kGCoordSystem] != -1) do_coordinate_system(b.g[kGCoordSystem]);
+  if (b.g[kGControl] != -1) do_control_mode(b, b.g[kGControl]);
+  if (b.g[kGDistance] != -1) do_distance_mode(b.g[kGDistance]);
+  if (b.g[kGArcDistance] != -1) do_distance_mode(b.g[kGArcDistance]);
+  if (b.g[kGRetract] != -1) do_retract_mode(b.g[kGRetract]);
+  switch (g0) {
+    case 100: do_g10(b); break;
+    case 280: case 281: case 300: case 301: do_home(b, g0); break;
+    case 920: case 921: case 922: case 923: do_axis_offsets(b, g0); break;
+    default: break;
+  }
+  // motion: the block's motion code, or the modal one when axis words are present
+  bool axis_motion = g0 != 100 && g0 != 280 && g0 != 300 && g0 != 920 && b.has_axis();
+  if (b.g[kGMotion] != -1) {
+    do_motion(b, b.g[kGMotion], g0 == 530);
+  } else if (axis_motion) {
+    do_motion(b, s_.motion, g0 == 530);
+  }
+  // STEP 5: stops
+  if (b.m[kMStop] != -1) return do_stop(b);
+  return false;
+}
+
+void Executor::check_block(const BlockCommand& b) {
+  int g0 = b.g[kGNonModal];
+  int motion = b.g[kGMotion];
+  bool g0_uses_axes = g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920;
+  if (g0_uses_axes && motion != -1 && motion != 800 && b.has_axis()) {
+    fail(b.g_column[kGMotion], "Cannot use two G codes that both use axis values");
+  }
+  if (motion == 800 && b.has_axis() && !g0_uses_axes) {
+    fail(b.g_column[kGMotion], "Cannot use axis values with g80");
+  }
+  if (motion == -1 && b.has_axis() && !g0_uses_axes && s_.motion == 800) {
+    fail(0, "Cannot use axis values without a g code that uses them");
+  }
+  if (g0 == 530 && motion != 0 && motion != 10 && !(motion == -1 && (s_.motion == 0 || s_.motion == 10))) {
+    fail(b.g_column[kGNonModal], "Must use G0 or G1 with G53");
+  }
+  if (b.has('p') && b.g[kGNonModal] != 40 && b.g[kGNonModal] != 100 && b.g[kGControl] != 640 &&
+      motion != 820 && motion != 860 && motion != 880 && motion != 890 && motion != 20 && motion != 30 &&
+      b.m[kMOverride] == -1 && b.m[kMSpindle] != 19 &&
+      !(motion == -1 && (s_.motion == 20 || s_.motion == 30 || s_.motion == 820 || s_.motion == 860 ||
+                         s_.motion == 880 || s_.motion == 890))) {
+    fail(b.col('p'), "P word with no G code or M code that uses it");
+  }
+  if (g0 == 40 && !b.has('p')) fail(b.g_column[kGNonModal], "Dwell time P word missing with G4");
+}
+
+void Executor::do_comment(const BlockCommand& b) {
+  if (b.comment_is_message) {
+    emit(Message{std::string(b.comment)});
+    return;
+  }
+  std::string_view text = b.comment;
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+  emit(Comment{std::string(text)});
+}
+
+void Executor::do_feed_mode(int g) {
+  if (g == 930) {
+    emit(Comment{"interpreter: feed mode set to inverse time"});
+    emit(SetFeedMode{0, 0});
+    s_.feed_mode = FeedMode::InverseTime;
+  } else if (g == 940) {
+    emit(Comment{"interpreter: feed mode set to units per minute"});
+    emit(SetFeedMode{0, 0});
+    s_.feed_mode = FeedMode::UnitsPerMinute;
+    s_.feed_rate = 0;
+    emit(SetFeedRate{0});
+  } else {
+    emit(Comment{"interpreter: feed mode set to units per revolution"});
+    emit(SetFeedMode{0, 1});
+    s_.feed_mode = FeedMode::UnitsPerRevolution;
+    s_.feed_rate = 0;
+    emit(SetFeedRate{0});
+  }
+}
+
+void Executor::do_feed_rate(const BlockCommand& b) {
+  s_.feed_rate = b.get('f');
+  emit(SetFeedRate{s_.feed_rate});
+}
+
+void Executor::do_speed(const BlockCommand& b) {
+  double s = b.get('s');
+  if (s < 0) fail(b.col('s'), "Negative spindle speed used");
+  s_.speed = s;
+  emit(SetSpindleSpeed{0, s});
+}
+
+void Executor::do_dwell(const BlockCommand& b) {
+  double p = b.get('p');
+  if (p < 0) fail(b.col('p'), "Negative dwell time");
+  emit(Dwell{p});
+}
+
+void Executor::do_plane(int g) {
+  Plane p = g == 170 ? Plane::XY : g == 180 ? Plane::XZ : g == 190 ? Plane::YZ
+          : g == 171 ? Plane::UV : g == 181 ? Plane::UW : Plane::VW;
+  if (s_.comp_side != Side::Off && p != Plane::XY && p != Plane::XZ) {
+    fail(0, "Cannot change planes with cutter radius compensation on");
+  }
+  s_.plane = p;
+  emit(SelectPlane{p});
+}
+
+void Executor::do_units(int g) {
+  Units u = g == 200 ? Units::Inches : Units::Millimeters;
+  if (s_.comp_side != Side::Off) fail(0, "Cannot change units with cutter radius compensation on");
+  if (u != s_.units) {
+    double k = (u == Units::Millimeters) ? 25.4 : 1.0 / 25.4;
+    Pose& p = s_.position;
+    p.x *= k; p.y *= k; p.z *= k; p.u *= k; p.v *= k; p.w *= k;
+    if (s_.feed_rate != 0) s_.feed_rate *= k;  // LinuxCNC keeps the feed in the new units
+    s_.cycle_r *= k;
+    s_.cycle_z *= k;
+    s_.cycle_initial_level *= k;
+    s_.units = u;
+  }
+  emit(UseLengthUnits{u});
+}
+
+void Executor::do_control_mode(const BlockCommand& b, int g) {
+  if (g == 610) {
+    s_.control = MotionControlMode::ExactPath;
+    emit(SetMotionControlMode{MotionControlMode::ExactPath, 0});
+  } else if (g == 611) {
+    s_.control = MotionControlMode::ExactStop;
+    emit(SetMotionControlMode{MotionControlMode::ExactStop, 0});
+  } else {
+    double p = b.has('p') ? b.get('p') : 0.0;
+    double q = b.has('q') ? b.get('q') : p;
+    if (p < 0) fail(b.col('p'), "G64 P value must be non-negative");
+    s_.control = MotionControlMode::Continuous;
+    s_.control_tolerance = p;
+    s_.naivecam_tolerance = q;
+    emit(SetMotionControlMode{MotionControlMode::Continuous, p});
+    emit(SetNaivecamTolerance{q});
+  }
+}
+
+void Executor::do_distance_mode(int g) {
+  switch (g) {
+    case 900:
+      if (s_.distance == DistanceMode::Incremental) emit(Comment{"interpreter: distance mode changed to absolute"});
+      s_.distance = DistanceMode::Absolute;
+      break;
+    case 910:
+      if (s_.distance == DistanceMode::Absolute) emit(Comment{"interpreter: distance mode changed to incremental"});
+      s_.distance = DistanceMode::Incremental;
+      break;
+    case 901:
+      if (s_.arc_distance == DistanceMode::Incremental) emit(Comment{"interpreter: IJK distance mode changed to absolute"});
+      s_.arc_distance = DistanceMode::Absolute;
+      break;
+    case 911:
+      if (s_.arc_distance == DistanceMode::Absolute) emit(Comment{"interpreter: IJK distance mode changed to incremental"});
+      s_.arc_distance = DistanceMode::Incremental;
+      break;
+    default: break;
+  }
+}
+
+void Executor::do_retract_mode(int g) {
+  if (g == 980) {
+    emit(Comment{"interpreter: retract mode set to old_z"});
+    s_.retract = RetractMode::OldZ;
+  } else {
+    emit(Comment{"interpreter: retract mode set to r_plane"});
+    s_.retract = RetractMode::RPlane;
+  }
+}
+
+void Executor::do_overrides(const BlockCommand& b) {
+  int m = b.m[kMOverride];
+  bool on_p = !b.has('p') || b.get('p') != 0.0;
+  switch (m) {
+    case 48:
+      emit(EnableFeedOverride{0});
+      emit(EnableSpeedOverride{0});
+      s_.feed_override = s_.speed_override = true;
+      break;
+    case 49:
+      emit(DisableFeedOverride{0});
+      emit(DisableSpeedOverride{0});
+      s_.feed_override = s_.speed_override = false;
+      break;
+    case 50:
+      if (on_p) emit(EnableFeedOverride{0}); else emit(DisableFeedOverride{0});
+      s_.feed_override = on_p;
+      break;
+    case 51:
+      if (on_p) emit(EnableSpeedOverride{0}); else emit(DisableSpeedOverride{0});
+      s_.speed_override = on_p;
+      break;
+    case 52:
+      if (on_p) emit(EnableAdaptiveFeed{}); else emit(DisableAdaptiveFeed{});
+      break;
+    case 53:
+      if (on_p) emit(EnableFeedHold{}); else emit(DisableFeedHold{});
+      break;
+    default: break;
+  }
+}
+
+void Executor::do_coolant(const BlockCommand& b) {
+  int m = b.m[kMCoolant];
+  if (m == 7) {
+    emit(MistOn{});
+    s_.mist = true;
+  } else if (m == 8) {
+    emit(FloodOn{});
+    s_.flood = true;
+  } else {
+    emit(MistOff{});
+    emit(FloodOff{});
+    s_.mist = s_.flood = false;
+  }
+}
+
+void Executor::do_cutter_comp(const BlockCommand& b, int g) {
+  if (g == 400) {
+    emit(Comment{"interpreter: cutter radius compensation off"});
+    s_.comp_side = Side::Off;
+    return;
+  }
+  fail(b.g_column[kGCutterComp],
+       "cutter radius compensation (G41/G42) is not yet supported by this interpreter");
+}
+
+}  // namespace ncbridge::interpreter

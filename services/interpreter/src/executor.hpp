@@ -1,0 +1,104 @@
+#pragma once
+// The RS274 block executor: runs one BlockCommand against the modal state in the NIST order of
+// execution (RS274/NGC v3 table 8; LinuxCNC execute_block), emitting canonical calls tagged
+// with the block's Source. Phases live in files named for them: motion.cpp, arcs.cpp,
+// canned_cycles.cpp, offsets.cpp, tools_and_spindle.cpp, program_end.cpp.
+#include <optional>
+#include <string>
+
+#include "block_command.hpp"
+#include "modal_state.hpp"
+#include "ncbridge/canonical/call.hpp"
+#include "ncbridge/interpreter/interpreter.hpp"
+#include "parameters.hpp"
+
+namespace ncbridge::interpreter {
+
+class Executor final : public ComputedParameters {
+ public:
+  Executor(const Options& options, Parameters& parameters, canonical::Sink& sink);
+  ~Executor() override;
+  Executor(const Executor&) = delete;
+  Executor& operator=(const Executor&) = delete;
+
+  // The calls LinuxCNC makes when the interpreter starts (offsets, feed reference, ON_RESET).
+  void start();
+
+  // Runs one block. `source` tags every call it makes; `file` names the file for errors.
+  // Returns true when the block ended the program (M2, M30).
+  bool execute(const BlockCommand& block, const canonical::Source& source, const std::string& file);
+
+  // Emits a call now (tagged with the current source).
+  void emit(canonical::Data data);
+  void set_source(const canonical::Source& source) { source_ = source; }
+  void flush();  // pending (cutter compensation) output
+
+  const ModalState& state() const { return s_; }
+  std::optional<double> computed(std::string_view name) const override;
+
+ private:
+  [[noreturn]] void fail(std::uint32_t column, const std::string& message) const;
+
+  // executor.cpp
+  void check_block(const BlockCommand& b);
+  void do_comment(const BlockCommand& b);
+  void do_feed_mode(int g);
+  void do_feed_rate(const BlockCommand& b);
+  void do_speed(const BlockCommand& b);
+  void do_dwell(const BlockCommand& b);
+  void do_plane(int g);
+  void do_units(int g);
+  void do_control_mode(const BlockCommand& b, int g);
+  void do_distance_mode(int g);
+  void do_retract_mode(int g);
+  void do_overrides(const BlockCommand& b);
+  void do_coolant(const BlockCommand& b);
+  void do_cutter_comp(const BlockCommand& b, int g);
+
+  // tools_and_spindle.cpp
+  void do_tool_select(const BlockCommand& b);
+  void do_tool_change(const BlockCommand& b);
+  void do_spindle(const BlockCommand& b);
+  void do_spindle_mode(const BlockCommand& b, int g);
+  void do_tool_length_offset(const BlockCommand& b, int g);
+
+  // offsets.cpp
+  void do_coordinate_system(int g);
+  void do_g10(const BlockCommand& b);
+  void do_home(const BlockCommand& b, int g);
+  void do_axis_offsets(const BlockCommand& b, int g);
+  void apply_origin_change(const canonical::Pose& old_total_mm);
+  canonical::Pose origin_mm() const;  // g5x + g92 (when active)
+  void emit_g5x();
+  void emit_g92();
+  void write_parameters();
+
+  // motion.cpp
+  void do_motion(const BlockCommand& b, int motion, bool g53);
+  canonical::Pose find_end(const BlockCommand& b, bool g53) const;
+  void straight(bool feed, const canonical::Pose& end, const BlockCommand* b);
+  void set_inverse_time_rate(double length, const BlockCommand& b);
+
+  // arcs.cpp
+  void arc(const BlockCommand& b, int motion, const canonical::Pose& end);
+
+  // canned_cycles.cpp
+  void canned_cycle(const BlockCommand& b, int motion);
+
+  // program_end.cpp
+  bool do_stop(const BlockCommand& b);
+
+  double to_units(double mm) const { return mm / s_.mm_per_unit(); }
+  canonical::Pose to_units(const canonical::Pose& mm) const;
+
+  const Options& options_;
+  Parameters& params_;
+  canonical::Sink& sink_;
+  ModalState s_;
+  canonical::Source source_;
+  std::optional<canonical::CycleTag> cycle_tag_;
+  const std::string* file_ = nullptr;
+  std::uint32_t line_ = 0;
+};
+
+}  // namespace ncbridge::interpreter

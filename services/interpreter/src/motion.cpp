@@ -1,0 +1,121 @@
+// Straight motion: G0, G1, G53, G33, G33.1, and the dispatch of every motion mode.
+#include <cmath>
+
+#include "executor.hpp"
+
+namespace ncbridge::interpreter {
+
+using namespace canonical;
+
+namespace {
+bool is_canned_cycle(int motion) {
+  return motion == 730 || (motion >= 810 && motion <= 890);
+}
+}  // namespace
+
+// The end point of a move in program coordinates (LinuxCNC find_ends).
+Pose Executor::find_end(const BlockCommand& b, bool g53) const {
+  Pose end = s_.position;
+  const Pose origin = to_units(origin_mm());
+  const Pose tool = to_units(s_.tool_offset_mm);
+  struct Axis { char letter; double Pose::*field; };
+  static constexpr Axis kAxes[] = {{'x', &Pose::x}, {'y', &Pose::y}, {'z', &Pose::z},
+                                   {'a', &Pose::a}, {'b', &Pose::b}, {'c', &Pose::c},
+                                   {'u', &Pose::u}, {'v', &Pose::v}, {'w', &Pose::w}};
+  for (const Axis& axis : kAxes) {
+    if (!b.has(axis.letter)) continue;
+    double v = b.get(axis.letter);
+    if (g53) {
+      end.*axis.field = v - origin.*axis.field - tool.*axis.field;
+    } else if (s_.distance == DistanceMode::Incremental) {
+      end.*axis.field += v;
+    } else {
+      end.*axis.field = v;
+    }
+  }
+  return end;
+}
+
+void Executor::set_inverse_time_rate(double length, const BlockCommand& b) {
+  // F is the inverse of the time in minutes: feed = length * F
+  emit(SetFeedRate{length * b.get('f')});
+}
+
+void Executor::straight(bool feed, const Pose& end, const BlockCommand* b) {
+  if (feed) {
+    if (b != nullptr && s_.feed_mode == FeedMode::InverseTime) {
+      const Pose& p = s_.position;
+      double length = std::sqrt((end.x - p.x) * (end.x - p.x) + (end.y - p.y) * (end.y - p.y) +
+                                (end.z - p.z) * (end.z - p.z));
+      if (length == 0) {
+        length = std::sqrt((end.a - p.a) * (end.a - p.a) + (end.b - p.b) * (end.b - p.b) +
+                           (end.c - p.c) * (end.c - p.c));
+      }
+      set_inverse_time_rate(length, *b);
+    }
+    emit(StraightFeed{end});
+  } else {
+    emit(StraightTraverse{end});
+  }
+  s_.position = end;
+}
+
+void Executor::do_motion(const BlockCommand& b, int motion, bool g53) {
+  if (!is_canned_cycle(motion)) s_.cycle_initial_level_valid = false;
+  switch (motion) {
+    case 0: {
+      Pose end = find_end(b, g53);
+      straight(false, end, &b);
+      break;
+    }
+    case 10: {
+      if (s_.feed_mode == FeedMode::UnitsPerMinute && s_.feed_rate == 0) {
+        fail(b.g_column[kGMotion], "Cannot do G1 with zero feed rate");
+      }
+      if (s_.feed_mode == FeedMode::UnitsPerRevolution && s_.feed_rate == 0) {
+        fail(b.g_column[kGMotion], "Cannot do G1 with zero feed rate");
+      }
+      if (s_.feed_mode == FeedMode::InverseTime && !b.has('f')) {
+        fail(b.g_column[kGMotion], "F word missing with inverse time G1 move");
+      }
+      Pose end = find_end(b, g53);
+      straight(true, end, &b);
+      break;
+    }
+    case 20:
+    case 30:
+      arc(b, motion, find_end(b, false));
+      break;
+    case 330:
+    case 331: {
+      if (s_.spindle == Direction::Stopped) {
+        fail(b.g_column[kGMotion], motion == 330 ? "Spindle not turning in G33" : "Spindle not turning in G33.1");
+      }
+      if (!b.has('k')) fail(b.g_column[kGMotion], "K word missing with G33");
+      Pose end = find_end(b, false);
+      emit(StartSpeedFeedSynch{0, b.get('k'), false});
+      if (motion == 330) {
+        emit(StraightFeed{end});
+      } else {
+        emit(RigidTap{end, 1.0});
+        end = s_.position;  // rigid tapping returns to the start
+      }
+      emit(StopSpeedFeedSynch{});
+      s_.position = end;
+      break;
+    }
+    case 800:
+      emit(Comment{"interpreter: motion mode set to none"});
+      break;
+    default:
+      if (is_canned_cycle(motion)) {
+        canned_cycle(b, motion);
+        return;  // canned_cycle sets the motion mode itself
+      }
+      fail(b.g_column[kGMotion], "G" + std::to_string(motion / 10) + (motion % 10 ? "." + std::to_string(motion % 10) : "") +
+                                     " is not supported by this interpreter");
+  }
+  s_.motion = motion;
+}
+
+}  // namespace ncbridge::interpreter

@@ -1,0 +1,187 @@
+// Coordinate systems and offsets: G54-G59.3, G10 L1/L2/L10/L20, G28/G30 (+.1), G92 family,
+// and the parameters that hold them (#5161-#5390).
+#include <cmath>
+
+#include "executor.hpp"
+
+namespace ncbridge::interpreter {
+
+using namespace canonical;
+
+namespace {
+constexpr double Pose::*kFields[9] = {&Pose::x, &Pose::y, &Pose::z, &Pose::a, &Pose::b,
+                                      &Pose::c, &Pose::u, &Pose::v, &Pose::w};
+constexpr char kLetters[9] = {'x', 'y', 'z', 'a', 'b', 'c', 'u', 'v', 'w'};
+bool is_linear(int axis) { return axis < 3 || axis > 5; }
+}  // namespace
+
+Pose Executor::origin_mm() const {
+  Pose o = s_.g5x_mm[static_cast<std::size_t>(s_.coord_system)];
+  if (s_.g92_active) {
+    for (auto f : kFields) o.*f += s_.g92_mm.*f;
+  }
+  return o;
+}
+
+void Executor::emit_g5x() {
+  emit(SetG5xOffset{s_.coord_system, to_units(s_.g5x_mm[static_cast<std::size_t>(s_.coord_system)])});
+}
+
+void Executor::emit_g92() {
+  emit(SetG92Offset{s_.g92_active ? to_units(s_.g92_mm) : Pose{}});
+}
+
+// Parameters mirror the offsets (in the current units, as a program reading them expects).
+void Executor::write_parameters() {
+  for (int axis = 0; axis < 9; ++axis) {
+    double k = is_linear(axis) ? s_.mm_per_unit() : 1.0;
+    params_.set_numbered(5161 + axis, s_.g28_mm.*kFields[axis] / k);
+    params_.set_numbered(5181 + axis, s_.g30_mm.*kFields[axis] / k);
+    params_.set_numbered(5211 + axis, s_.g92_mm.*kFields[axis] / k);
+    for (int system = 1; system <= 9; ++system) {
+      params_.set_numbered(5201 + 20 * system + axis, s_.g5x_mm[static_cast<std::size_t>(system)].*kFields[axis] / k);
+    }
+  }
+  params_.set_numbered(5210, s_.g92_active ? 1.0 : 0.0);
+  params_.set_numbered(5220, s_.coord_system);
+}
+
+// The program position moves opposite to the origin (LinuxCNC keeps the machine still).
+void Executor::apply_origin_change(const Pose& old_total_mm) {
+  Pose now = origin_mm();
+  for (int axis = 0; axis < 9; ++axis) {
+    double k = is_linear(axis) ? s_.mm_per_unit() : 1.0;
+    s_.position.*kFields[axis] += (old_total_mm.*kFields[axis] - now.*kFields[axis]) / k;
+  }
+}
+
+void Executor::do_coordinate_system(int g) {
+  int system = g == 540 ? 1 : g == 550 ? 2 : g == 560 ? 3 : g == 570 ? 4 : g == 580 ? 5 : g == 590 ? 6
+             : g == 591 ? 7 : g == 592 ? 8 : 9;
+  if (s_.comp_side != Side::Off) fail(0, "Cannot change coordinate systems with cutter radius compensation on");
+  if (system == s_.coord_system) {
+    emit(Comment{"interpreter: continuing to use same coordinate system"});
+    return;
+  }
+  Pose old = origin_mm();
+  s_.coord_system = system;
+  apply_origin_change(old);
+  params_.set_numbered(5220, system);
+  emit_g5x();
+  emit_g92();
+  emit(SetXyRotation{s_.rotation_deg});
+}
+
+void Executor::do_g10(const BlockCommand& b) {
+  if (!b.has('l')) fail(b.g_column[kGNonModal], "Line with G10 does not have L2, L10, L20 or L1");
+  int l = static_cast<int>(std::lround(b.get('l')));
+  if (!b.has('p')) fail(b.g_column[kGNonModal], "P word missing with G10");
+  double pv = b.get('p');
+  int p = static_cast<int>(std::lround(pv));
+  double k = s_.mm_per_unit();
+  if (l == 2 || l == 20) {
+    if (p < 0 || p > 9) fail(b.col('p'), "P value out of range with G10 L" + std::to_string(l));
+    int system = p == 0 ? s_.coord_system : p;
+    Pose& target = s_.g5x_mm[static_cast<std::size_t>(system)];
+    Pose old = origin_mm();
+    for (int axis = 0; axis < 9; ++axis) {
+      char letter = kLetters[axis];
+      if (!b.has(letter)) continue;
+      double scale = is_linear(axis) ? k : 1.0;
+      double v = b.get(letter);
+      if (l == 2) {
+        target.*kFields[axis] = v * scale;
+      } else {
+        // L20: make the current position read `v` in that system
+        double machine = (s_.position.*kFields[axis]) * scale + old.*kFields[axis] +
+                         (axis == 2 || axis == 0 ? s_.tool_offset_mm.*kFields[axis] : 0.0);
+        double g92 = s_.g92_active ? s_.g92_mm.*kFields[axis] : 0.0;
+        target.*kFields[axis] = machine - v * scale - g92 -
+                                (axis == 2 || axis == 0 ? s_.tool_offset_mm.*kFields[axis] : 0.0);
+      }
+    }
+    if (b.has('r')) {
+      if (system == s_.coord_system) s_.rotation_deg = b.get('r');
+    }
+    write_parameters();
+    if (system == s_.coord_system) {
+      apply_origin_change(old);
+      emit_g5x();
+      emit(SetXyRotation{s_.rotation_deg});
+    }
+    return;
+  }
+  if (l == 1 || l == 10 || l == 11) {
+    fail(b.g_column[kGNonModal], "G10 L" + std::to_string(l) + " (tool table) is not supported: tools come from the tool list");
+  }
+  fail(b.col('l'), "Line with G10 does not have L2, L10, L20 or L1");
+}
+
+void Executor::do_home(const BlockCommand& b, int g) {
+  double k = s_.mm_per_unit();
+  Pose& home = (g == 280 || g == 281) ? s_.g28_mm : s_.g30_mm;
+  if (g == 281 || g == 301) {
+    Pose origin = origin_mm();
+    for (int axis = 0; axis < 9; ++axis) {
+      double scale = is_linear(axis) ? k : 1.0;
+      home.*kFields[axis] = s_.position.*kFields[axis] * scale + origin.*kFields[axis] +
+                            s_.tool_offset_mm.*kFields[axis];
+    }
+    write_parameters();
+    return;
+  }
+  Pose intermediate = find_end(b, false);
+  straight(false, intermediate, nullptr);
+  Pose end = s_.position;
+  Pose origin = origin_mm();
+  bool any = b.has_axis();
+  for (int axis = 0; axis < 9; ++axis) {
+    if (any && !b.has(kLetters[axis])) continue;
+    double scale = is_linear(axis) ? k : 1.0;
+    end.*kFields[axis] = (home.*kFields[axis] - origin.*kFields[axis] - s_.tool_offset_mm.*kFields[axis]) / scale;
+  }
+  straight(false, end, nullptr);
+}
+
+void Executor::do_axis_offsets(const BlockCommand& b, int g) {
+  double k = s_.mm_per_unit();
+  Pose old = origin_mm();
+  switch (g) {
+    case 920: {
+      if (!b.has_axis()) fail(b.g_column[kGNonModal], "All axes missing with G92");
+      Pose g5x = s_.g5x_mm[static_cast<std::size_t>(s_.coord_system)];
+      for (int axis = 0; axis < 9; ++axis) {
+        char letter = kLetters[axis];
+        double scale = is_linear(axis) ? k : 1.0;
+        double current_g92 = s_.g92_active ? s_.g92_mm.*kFields[axis] : 0.0;
+        if (b.has(letter)) {
+          // machine position of the tool (program position + origin) must read as `v`
+          double machine = s_.position.*kFields[axis] * scale + g5x.*kFields[axis] + current_g92;
+          s_.g92_mm.*kFields[axis] = machine - g5x.*kFields[axis] - b.get(letter) * scale;
+        } else {
+          s_.g92_mm.*kFields[axis] = current_g92;
+        }
+      }
+      s_.g92_active = true;
+      break;
+    }
+    case 921:
+      s_.g92_mm = Pose{};
+      s_.g92_active = false;
+      break;
+    case 922:
+      s_.g92_active = false;
+      break;
+    case 923:
+      s_.g92_active = true;
+      break;
+    default:
+      break;
+  }
+  apply_origin_change(old);
+  if (g != 922) write_parameters();
+  else params_.set_numbered(5210, 0.0);
+  emit_g92();
+}
+
+}  // namespace ncbridge::interpreter

@@ -1,0 +1,129 @@
+// Tools and spindle: T (SELECT_TOOL), M6, M61, G43/G43.1/G49, M3/M4/M5, G96/G97.
+#include <cmath>
+
+#include "executor.hpp"
+
+namespace ncbridge::interpreter {
+
+using namespace canonical;
+
+void Executor::do_tool_select(const BlockCommand& b) {
+  double t = b.get('t');
+  int tool = static_cast<int>(std::lround(t));
+  if (tool < 0) fail(b.col('t'), "Negative tool id used");
+  if (tool != 0 && options_.tools.find(tool) == nullptr && !options_.tools.empty()) {
+    fail(b.col('t'), "Requested tool " + std::to_string(tool) + " not found in the tool table");
+  }
+  s_.selected_tool = tool;
+  emit(SelectTool{tool});
+}
+
+void Executor::do_tool_change(const BlockCommand& b) {
+  int m = b.m[kMToolChange];
+  if (m == 61) {
+    if (!b.has('q')) fail(b.m_column[kMToolChange], "Q word missing with M61");
+    int tool = static_cast<int>(std::lround(b.get('q')));
+    if (tool < 0) fail(b.col('q'), "Need non-negative Q-word to specify tool number with M61");
+    s_.tool_in_spindle = tool;
+    s_.selected_tool = tool;
+    emit(ChangeToolNumber{tool});
+    return;
+  }
+  if (s_.comp_side != Side::Off) fail(b.m_column[kMToolChange], "Cannot change tools with cutter radius compensation on");
+  int tool = s_.selected_tool < 0 ? s_.tool_in_spindle : s_.selected_tool;
+  emit(StartChange{});
+  emit(StopSpindleTurning{0});
+  s_.spindle = Direction::Stopped;
+  emit(ChangeTool{tool});
+  s_.tool_in_spindle = tool;
+}
+
+void Executor::do_spindle(const BlockCommand& b) {
+  switch (b.m[kMSpindle]) {
+    case 3:
+      emit(StartSpindleClockwise{0});
+      s_.spindle = Direction::Clockwise;
+      break;
+    case 4:
+      emit(StartSpindleCounterclockwise{0});
+      s_.spindle = Direction::Counterclockwise;
+      break;
+    case 5:
+      emit(StopSpindleTurning{0});
+      s_.spindle = Direction::Stopped;
+      break;
+    default:
+      fail(b.m_column[kMSpindle], "M19 (spindle orientation) is not supported by this interpreter");
+  }
+}
+
+void Executor::do_spindle_mode(const BlockCommand& b, int g) {
+  if (g == 960) {
+    double max = b.has('d') ? b.get('d') : 0.0;
+    emit(SetSpindleMode{0, max});
+    s_.css = true;
+  } else {
+    emit(SetSpindleMode{0, 0.0});
+    s_.css = false;
+  }
+}
+
+void Executor::do_tool_length_offset(const BlockCommand& b, int g) {
+  double k = s_.mm_per_unit();
+  Pose offset_mm{};
+  if (g == 490) {
+    // all zero
+  } else if (g == 430) {
+    int tool = s_.tool_in_spindle;
+    if (b.has('h')) {
+      double h = b.get('h');
+      tool = static_cast<int>(std::lround(h));
+      if (tool < 0) fail(b.col('h'), "Negative H word tool length offset index used");
+    }
+    if (tool != 0) {
+      const setup::Tool* t = options_.tools.find(tool);
+      if (t == nullptr) {
+        if (!options_.tools.empty() || b.has('h')) {
+          fail(b.has('h') ? b.col('h') : b.g_column[kGToolLength],
+               "Tool " + std::to_string(tool) + " has no tool length offset (not in the tool table)");
+        }
+      } else {
+        offset_mm.z = t->length;
+        offset_mm.x = t->x_offset;
+      }
+    }
+  } else if (g == 431) {
+    for (char letter : {'x', 'y', 'z', 'u', 'v', 'w'}) {
+      if (!b.has(letter)) continue;
+      double v = b.get(letter) * k;
+      switch (letter) {
+        case 'x': offset_mm.x = v; break;
+        case 'y': offset_mm.y = v; break;
+        case 'z': offset_mm.z = v; break;
+        case 'u': offset_mm.u = v; break;
+        case 'v': offset_mm.v = v; break;
+        default: offset_mm.w = v; break;
+      }
+    }
+    for (char letter : {'a', 'b', 'c'}) {
+      if (!b.has(letter)) continue;
+      double v = b.get(letter);
+      if (letter == 'a') offset_mm.a = v; else if (letter == 'b') offset_mm.b = v; else offset_mm.c = v;
+    }
+  }
+  Pose old = s_.tool_offset_mm;
+  s_.tool_offset_mm = offset_mm;
+  Pose& p = s_.position;
+  p.x += (old.x - offset_mm.x) / k;
+  p.y += (old.y - offset_mm.y) / k;
+  p.z += (old.z - offset_mm.z) / k;
+  p.a += old.a - offset_mm.a;
+  p.b += old.b - offset_mm.b;
+  p.c += old.c - offset_mm.c;
+  p.u += (old.u - offset_mm.u) / k;
+  p.v += (old.v - offset_mm.v) / k;
+  p.w += (old.w - offset_mm.w) / k;
+  emit(UseToolLengthOffset{to_units(offset_mm)});
+}
+
+}  // namespace ncbridge::interpreter
