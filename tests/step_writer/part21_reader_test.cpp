@@ -66,6 +66,9 @@ TEST(Part21Reader, ReadsCommentsMultiLineAndComplexInstances) {
 TEST(Part21Reader, DecodesStringEscapes) {
   ReadResult r = read_part21(file_with("#1=S('\\X2\\00C400DF\\X0\\-\\X\\E9-\\S\\D-\\PA\\x-\\X4\\0001F529\\X0\\-\\\\-\\X2\\D83DDD29\\X0\\');\n"), "t");
   EXPECT_EQ(r.graph.at(1).attributes()[0].as_string(), "Äß-é-Ä-x-🔩-\\-🔩");
+  // Raw 8-bit text: UTF-8 is kept, other bytes are read as ISO 8859-1.
+  ReadResult raw = read_part21(file_with("#1=S('Ma\xC3\x9F caf\xE9');\n"), "t");
+  EXPECT_EQ(raw.graph.at(1).attributes()[0].as_string(), "Ma\xC3\x9F caf\xC3\xA9");
 }
 
 TEST(Part21Reader, ReadsHeaderFields) {

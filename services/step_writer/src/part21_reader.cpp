@@ -43,7 +43,8 @@ void append_code_point(std::string& out, std::uint32_t cp) {
   append_utf8(out, cp);
 }
 
-// Part 21 string escapes to UTF-8. Unknown backslash sequences are kept as written.
+// Part 21 string escapes to UTF-8. Unknown backslash sequences are kept as written; bytes that
+// are not UTF-8 are read as ISO 8859-1, so a decoded string is always valid UTF-8.
 std::string decode_string(std::string_view raw) {
   std::string out;
   out.reserve(raw.size());
@@ -53,6 +54,10 @@ std::string decode_string(std::string_view raw) {
     if (c == '\'') {  // the tokenizer only lets '' through
       out += '\'';
       i += 2;
+      continue;
+    }
+    if (static_cast<unsigned char>(c) >= 0x80) {  // raw 8-bit text (ed.3 allows UTF-8): kept as UTF-8
+      append_code_point(out, decode_utf8(raw, i));
       continue;
     }
     if (c != '\\') {

@@ -1,0 +1,508 @@
+// Part 21 instance graph -> ISO 14649 model: the inverse of cc1_writer.cpp, and tolerant of the
+// shapes real files have (NIST: tool bodies with a taper, bare POLYLINE toolpaths, strategies).
+// What the model cannot hold yet (CC2 features and operations other than the drilling family)
+// is reported as a warning; a file without a PROJECT, or with a reference to the wrong kind of
+// entity, is an InputError naming the instance's line.
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+
+#include "ncbridge/step_writer/part21_reader.hpp"
+#include "ncbridge/step_writer/stepnc_file.hpp"
+
+namespace ncbridge::step_writer {
+
+namespace {
+
+using namespace part21;
+namespace sn = stepnc;
+
+class Cc1Reader {
+ public:
+  Cc1Reader(const Graph& g, std::string file) : g_(g), file_(std::move(file)) {}
+
+  StepncReadResult read() {
+    const auto projects = g_.ids_of("PROJECT");
+    if (projects.empty()) throw InputError({file_, 0, 0}, "no PROJECT instance: not an ISO 14649 program");
+    const Instance& project = instance(projects.front());
+    if (projects.size() > 1) warn(project, "more than one PROJECT: reading the first");
+    auto& p = result_.project;
+    p.its_id = text(project, 0);
+    const auto workpieces = list(project, 2);
+    if (!workpieces.empty()) {
+      const Instance& wp = expect(reference_in(workpieces.front(), project), {"WORKPIECE"}, project);
+      workpiece_id_ = wp.id;
+      p.workpiece = workpiece(wp);
+      if (!attr(wp, 3).is_unset()) p.rawpiece = workpiece(expect(attr(wp, 3).as_reference(), {"WORKPIECE"}, wp));
+    }
+    const Instance& workplan = expect(reference(project, 1), {"WORKPLAN"}, project);
+    p.main_workplan.its_id = text(workplan, 0);
+    if (!attr(workplan, 3).is_unset()) p.setup = setup(expect(attr(workplan, 3).as_reference(), {"SETUP"}, workplan));
+    for (const Value& v : list(workplan, 1)) executable(instance(reference_in(v, workplan)));
+    return std::move(result_);
+  }
+
+ private:
+  // ---- access with errors that name the instance
+  [[noreturn]] void fail(const Instance& at, const std::string& message) const {
+    throw InputError({file_, at.line, at.column}, "#" + std::to_string(at.id) + " " + at.entity() + ": " + message);
+  }
+  void warn(const Instance& at, std::string message) {
+    Diagnostic d;
+    d.severity = Severity::Warning;
+    d.where = {file_, at.line, at.column};
+    d.instance = at.id;
+    d.entity = at.entity();
+    d.message = std::move(message);
+    result_.warnings.push_back(std::move(d));
+  }
+  const Instance& instance(InstanceId id) const {
+    const Instance* i = g_.find(id);
+    if (!i || i->records.empty()) throw InputError({file_, 0, 0}, "reference to #" + std::to_string(id) + ", which the file does not define");
+    return *i;
+  }
+  const Value& attr(const Instance& i, std::size_t n) const {
+    if (i.complex) fail(i, "complex instances are not part of an ISO 14649 program");
+    if (n >= i.attributes().size()) fail(i, "has " + std::to_string(i.attributes().size()) + " attributes; attribute " + std::to_string(n + 1) + " is missing");
+    return i.attributes()[n];
+  }
+  InstanceId reference_in(const Value& v, const Instance& at) const {
+    if (!v.is_reference()) fail(at, "expected a reference");
+    return v.as_reference();
+  }
+  InstanceId reference(const Instance& i, std::size_t n) const { return reference_in(attr(i, n), i); }
+  std::string text(const Instance& i, std::size_t n) const {
+    const Value& v = attr(i, n);
+    if (v.is_unset()) return {};
+    if (!v.is_string()) fail(i, "attribute " + std::to_string(n + 1) + " must be a string");
+    return v.as_string();
+  }
+  double number(const Instance& i, std::size_t n) const {
+    const Value& v = attr(i, n);
+    if (!v.is_number() && !v.is_typed()) fail(i, "attribute " + std::to_string(n + 1) + " must be a number");
+    return v.as_number();
+  }
+  std::optional<double> opt_number(const Instance& i, std::size_t n) const {
+    if (n >= i.attributes().size() || attr(i, n).is_unset()) return std::nullopt;
+    return number(i, n);
+  }
+  bool flag(const Instance& i, std::size_t n) const {
+    const Value& v = attr(i, n);
+    if (!v.is_enumeration()) fail(i, "attribute " + std::to_string(n + 1) + " must be .T. or .F.");
+    return v.as_enumeration() == "T";
+  }
+  std::optional<bool> opt_flag(const Instance& i, std::size_t n) const {
+    if (n >= i.attributes().size() || attr(i, n).is_unset()) return std::nullopt;
+    return flag(i, n);
+  }
+  std::vector<Value> list(const Instance& i, std::size_t n) const {
+    const Value& v = attr(i, n);
+    if (v.is_unset()) return {};
+    if (!v.is_list()) fail(i, "attribute " + std::to_string(n + 1) + " must be a list");
+    return v.as_list();
+  }
+  const Instance& expect(InstanceId id, std::initializer_list<std::string_view> entities, const Instance& from) const {
+    const Instance& i = instance(id);
+    for (auto e : entities) {
+      if (!i.complex && i.entity() == e) return i;
+    }
+    std::string names;
+    for (auto e : entities) names += (names.empty() ? "" : " or ") + std::string(e);
+    fail(from, "refers to #" + std::to_string(id) + " " + (i.complex ? std::string("(complex)") : i.entity()) + ", expected " + names);
+  }
+
+  // ---- geometry
+  sn::CartesianPoint point(const Instance& i) const {
+    const auto c = list(i, 1);
+    if (c.empty() || c.size() > 3) fail(i, "a point has 1 to 3 coordinates");
+    sn::CartesianPoint p{0, 0, 0};
+    p.x = c[0].as_number();
+    if (c.size() > 1) p.y = c[1].as_number();
+    if (c.size() > 2) p.z = c[2].as_number();
+    return p;
+  }
+  sn::CartesianPoint point_ref(InstanceId id, const Instance& from) const { return point(expect(id, {"CARTESIAN_POINT"}, from)); }
+  sn::Direction direction(InstanceId id, const Instance& from) const {
+    const Instance& i = expect(id, {"DIRECTION"}, from);
+    const auto c = list(i, 1);
+    if (c.size() < 2) fail(i, "a direction has 2 or 3 ratios");
+    return {c[0].as_number(), c[1].as_number(), c.size() > 2 ? c[2].as_number() : 0.0};
+  }
+  sn::Axis2Placement3d placement(InstanceId id, const Instance& from) const {
+    const Instance& i = expect(id, {"AXIS2_PLACEMENT_3D"}, from);
+    sn::Axis2Placement3d a;
+    a.location = point_ref(reference(i, 1), i);
+    if (!attr(i, 2).is_unset()) a.axis = direction(reference(i, 2), i);
+    if (!attr(i, 3).is_unset()) a.ref_direction = direction(reference(i, 3), i);
+    return a;
+  }
+  sn::Plane plane(InstanceId id, const Instance& from) const {
+    const Instance& i = expect(id, {"PLANE"}, from);
+    return {placement(reference(i, 1), i)};
+  }
+  sn::Polyline polyline(const Instance& i) const {
+    sn::Polyline l;
+    for (const Value& v : list(i, 1)) l.points.push_back(point_ref(reference_in(v, i), i));
+    return l;
+  }
+  sn::TrimmedCircle trimmed_circle(const Instance& i) const {
+    const Instance& circle = expect(reference(i, 1), {"CIRCLE"}, i);
+    sn::TrimmedCircle t;
+    t.position = placement(reference(circle, 1), circle);
+    t.radius = number(circle, 2);
+    auto trim = [&](std::size_t n, sn::CartesianPoint& pt, double& parameter) {
+      bool have_point = false, have_parameter = false;
+      for (const Value& v : list(i, n)) {
+        if (v.is_reference()) {
+          pt = point_ref(v.as_reference(), i);
+          have_point = true;
+        } else {
+          parameter = v.as_number();
+          have_parameter = true;
+        }
+      }
+      if (!have_point || !have_parameter) fail(i, "each trim needs a point and a PARAMETER_VALUE");
+    };
+    trim(2, t.trim_1_point, t.trim_1_parameter);
+    trim(3, t.trim_2_point, t.trim_2_parameter);
+    t.sense_agreement = flag(i, 4);
+    return t;
+  }
+  sn::CompositeCurve curve(InstanceId id, const Instance& from) const {
+    const Instance& i = expect(id, {"POLYLINE", "TRIMMED_CURVE", "COMPOSITE_CURVE"}, from);
+    sn::CompositeCurve c;
+    if (i.entity() == "POLYLINE") {
+      c.segments.emplace_back(polyline(i));
+    } else if (i.entity() == "TRIMMED_CURVE") {
+      c.segments.emplace_back(trimmed_circle(i));
+    } else {
+      for (const Value& v : list(i, 1)) {
+        const Instance& seg = expect(reference_in(v, i), {"COMPOSITE_CURVE_SEGMENT"}, i);
+        const Instance& parent = expect(reference(seg, 2), {"POLYLINE", "TRIMMED_CURVE"}, seg);
+        if (parent.entity() == "POLYLINE") c.segments.emplace_back(polyline(parent));
+        else c.segments.emplace_back(trimmed_circle(parent));
+      }
+    }
+    return c;
+  }
+
+  // ---- resources
+  sn::ToolRef tool(InstanceId id, const Instance& from) {
+    if (auto it = tools_.find(id); it != tools_.end()) return it->second;
+    const Instance& i = expect(id, {"MILLING_CUTTING_TOOL"}, from);
+    sn::MillingCuttingTool t;
+    t.its_id = text(i, 0);
+    if (t.its_id.size() > 1 && t.its_id[0] == 'T' && std::isdigit(static_cast<unsigned char>(t.its_id[1]))) {
+      t.number = std::atoi(t.its_id.c_str() + 1);
+    }
+    const Instance& body = instance(reference(i, 1));
+    static const std::map<std::string, sn::ToolBody, std::less<>> kBodies{
+        {"FACEMILL", sn::ToolBody::Facemill}, {"ENDMILL", sn::ToolBody::Endmill},
+        {"TAPERED_ENDMILL", sn::ToolBody::Endmill}, {"BALL_ENDMILL", sn::ToolBody::BallEndmill},
+        {"BULLNOSE_ENDMILL", sn::ToolBody::BullnoseEndmill}, {"T_SLOT_MILL", sn::ToolBody::TSlotMill},
+        {"TWIST_DRILL", sn::ToolBody::TwistDrill}, {"TAPERED_DRILL", sn::ToolBody::TwistDrill},
+        {"CENTERDRILL", sn::ToolBody::Centerdrill}, {"COUNTERSINK", sn::ToolBody::Countersink},
+        {"REAMER", sn::ToolBody::Reamer}, {"TAPERED_REAMER", sn::ToolBody::Reamer},
+        {"TAP", sn::ToolBody::Tap}, {"TAPERED_TAP", sn::ToolBody::Tap},
+        {"BORING_TOOL", sn::ToolBody::BoringTool}, {"USER_DEFINED_TOOL", sn::ToolBody::UserDefinedTool}};
+    auto kind = kBodies.find(body.entity());
+    if (kind == kBodies.end()) {
+      warn(body, "tool body not mapped: read as USER_DEFINED_TOOL");
+      t.body = sn::ToolBody::UserDefinedTool;
+    } else {
+      t.body = kind->second;
+    }
+    const Instance& dim = expect(reference(body, 0), {"MILLING_TOOL_DIMENSION"}, body);
+    t.dimension.diameter = number(dim, 0);
+    t.dimension.tool_tip_half_angle = opt_number(dim, 1);
+    t.dimension.tool_circumference_angle = opt_number(dim, 2);
+    t.dimension.cutting_edge_length = opt_number(dim, 3);
+    t.dimension.edge_radius = opt_number(dim, 4);
+    t.dimension.edge_center_vertical = opt_number(dim, 5);
+    t.dimension.edge_center_horizontal = opt_number(dim, 6);
+    if (!attr(body, 1).is_unset()) t.number_of_teeth = attr(body, 1).as_integer();
+    if (!attr(body, 2).is_unset()) {
+      const std::string& h = attr(body, 2).as_enumeration();
+      t.hand_of_cut = h == "LEFT" ? sn::Hand::Left : h == "RIGHT" ? sn::Hand::Right : sn::Hand::Neutral;
+    }
+    t.coolant_through_tool = opt_flag(body, 3);
+    t.pilot_length = opt_number(body, 4);
+    const auto components = list(i, 2);
+    if (!components.empty()) {
+      const Instance& cc = expect(reference_in(components.front(), i), {"CUTTING_COMPONENT"}, i);
+      t.tool_offset_length = number(cc, 0);
+    }
+    t.overall_assembly_length = opt_number(i, 3);
+    result_.project.tools.push_back(std::move(t));
+    const sn::ToolRef r{static_cast<std::uint32_t>(result_.project.tools.size() - 1)};
+    tools_.emplace(id, r);
+    return r;
+  }
+  sn::TechnologyRef technology(InstanceId id, const Instance& from) {
+    if (auto it = technologies_.find(id); it != technologies_.end()) return it->second;
+    const Instance& i = expect(id, {"MILLING_TECHNOLOGY"}, from);
+    sn::MillingTechnology t;
+    t.feedrate = opt_number(i, 0);
+    t.feedrate_reference = attr(i, 1).is_enumeration() && attr(i, 1).as_enumeration() == "CCP" ? sn::ToolReferencePoint::Ccp
+                                                                                                : sn::ToolReferencePoint::Tcp;
+    t.cutspeed = opt_number(i, 2);
+    t.spindle = opt_number(i, 3);
+    t.feedrate_per_tooth = opt_number(i, 4);
+    t.synchronize_spindle_with_feed = flag(i, 5);
+    t.inhibit_feedrate_override = flag(i, 6);
+    t.inhibit_spindle_override = flag(i, 7);
+    result_.project.technologies.push_back(t);
+    const sn::TechnologyRef r{static_cast<std::uint32_t>(result_.project.technologies.size() - 1)};
+    technologies_.emplace(id, r);
+    return r;
+  }
+  sn::MachineFunctionsRef functions(InstanceId id, const Instance& from) {
+    if (auto it = functions_.find(id); it != functions_.end()) return it->second;
+    const Instance& i = expect(id, {"MILLING_MACHINE_FUNCTIONS"}, from);
+    sn::MillingMachineFunctions f;
+    f.coolant = flag(i, 0);
+    f.coolant_pressure = opt_number(i, 1);
+    f.mist = opt_flag(i, 2);
+    f.through_spindle_coolant = flag(i, 3);
+    f.through_pressure = opt_number(i, 4);
+    f.chip_removal = flag(i, 6);
+    result_.project.machine_functions.push_back(f);
+    const sn::MachineFunctionsRef r{static_cast<std::uint32_t>(result_.project.machine_functions.size() - 1)};
+    functions_.emplace(id, r);
+    return r;
+  }
+
+  sn::ToolpathList toolpath_list(InstanceId id, const Instance& from) {
+    const Instance& i = expect(id, {"TOOLPATH_LIST"}, from);
+    sn::ToolpathList l;
+    for (const Value& v : list(i, 0)) {
+      const Instance& t = expect(reference_in(v, i), {"CUTTER_LOCATION_TRAJECTORY"}, i);
+      sn::CutterLocationTrajectory c;
+      c.its_priority = flag(t, 0);
+      static const std::map<std::string, sn::ToolpathType, std::less<>> kTypes{
+          {"APPROACH", sn::ToolpathType::Approach}, {"LIFT", sn::ToolpathType::Lift},
+          {"CONNECT", sn::ToolpathType::Connect}, {"NON_CONTACT", sn::ToolpathType::NonContact},
+          {"CONTACT", sn::ToolpathType::Contact}, {"TRAJECTORY_PATH", sn::ToolpathType::TrajectoryPath}};
+      const Value& type = attr(t, 1);
+      auto k = type.is_enumeration() ? kTypes.find(type.as_enumeration()) : kTypes.end();
+      if (k == kTypes.end()) fail(t, "its_type must be a toolpath_type");
+      c.its_type = k->second;
+      if (!attr(t, 3).is_unset()) c.its_technology = technology(reference(t, 3), t);
+      if (!attr(t, 4).is_unset()) c.its_machine_functions = functions(reference(t, 4), t);
+      c.its_direction = opt_flag(t, 5);
+      c.basiccurve = curve(reference(t, 6), t);
+      l.its_list.push_back(std::move(c));
+    }
+    return l;
+  }
+
+  // ---- operations
+  void machining_operation(const Instance& i, sn::MachiningOperation& op) {
+    if (!attr(i, 0).is_unset()) op.its_toolpath = toolpath_list(reference(i, 0), i);
+    op.its_id = text(i, 2);
+    op.retract_plane = opt_number(i, 3);
+    if (!attr(i, 4).is_unset()) op.start_point = point_ref(reference(i, 4), i);
+    op.its_tool = tool(reference(i, 5), i);
+    op.its_technology = technology(reference(i, 6), i);
+    op.its_machine_functions = functions(reference(i, 7), i);
+    op.overcut_length = opt_number(i, 8);
+  }
+  void drilling(const Instance& i, sn::DrillingTypeOperation& op) {
+    machining_operation(i, op);
+    op.cutting_depth = opt_number(i, 9);
+    op.previous_diameter = opt_number(i, 10);
+    op.dwell_time_bottom = opt_number(i, 11);
+    op.feed_on_retract = opt_number(i, 12);
+    if (!attr(i, 13).is_unset()) {
+      const Instance& s = expect(reference(i, 13), {"DRILLING_TYPE_STRATEGY"}, i);
+      op.its_machining_strategy = sn::DrillingTypeStrategy{opt_number(s, 0), opt_number(s, 1), opt_number(s, 2),
+                                                           opt_number(s, 3), opt_number(s, 4), opt_number(s, 5)};
+    }
+  }
+  template <class Op>
+  Op boring(const Instance& i) {
+    Op op;
+    drilling(i, op);
+    op.spindle_stop_at_bottom = flag(i, 14);
+    op.depth_of_testcut = opt_number(i, 15);
+    if (!attr(i, 16).is_unset()) op.waiting_position = point_ref(reference(i, 16), i);
+    return op;
+  }
+  template <class Op>
+  Op simple_drilling(const Instance& i) {
+    Op op;
+    drilling(i, op);
+    return op;
+  }
+
+  std::optional<sn::OperationRef> operation(InstanceId id, const Instance& from) {
+    if (auto it = operations_.find(id); it != operations_.end()) return it->second;
+    const Instance& i = instance(id);
+    const std::string& e = i.entity();
+    sn::Operation op;
+    if (e == "FREEFORM_OPERATION") {
+      sn::FreeformOperation f;
+      machining_operation(i, f);
+      op = f;
+    } else if (e == "DRILLING") {
+      op = simple_drilling<sn::Drilling>(i);
+    } else if (e == "CENTER_DRILLING") {
+      op = simple_drilling<sn::CenterDrilling>(i);
+    } else if (e == "BACK_BORING") {
+      op = simple_drilling<sn::BackBoring>(i);
+    } else if (e == "MULTISTEP_DRILLING") {
+      sn::MultistepDrilling m;
+      drilling(i, m);
+      m.retract_distance = number(i, 14);
+      m.first_depth = number(i, 15);
+      m.depth_of_step = number(i, 16);
+      m.dwell_time_step = opt_number(i, 17);
+      op = m;
+    } else if (e == "BORING") {
+      op = boring<sn::Boring>(i);
+    } else if (e == "REAMING") {
+      op = boring<sn::Reaming>(i);
+    } else if (e == "TAPPING") {
+      sn::Tapping t;
+      drilling(i, t);
+      t.compensation_chuck = flag(i, 14);
+      op = t;
+    } else {
+      warn(i, "operation " + e + " is not read yet (CC2 milling operations come with the feature recogniser): its workingstep is left out");
+      (void)from;
+      return std::nullopt;
+    }
+    result_.project.operations.push_back(std::move(op));
+    const sn::OperationRef r{static_cast<std::uint32_t>(result_.project.operations.size() - 1)};
+    operations_.emplace(id, r);
+    return r;
+  }
+
+  // ---- features
+  std::optional<sn::FeatureRef> feature(InstanceId id, const Instance& from) {
+    if (auto it = features_.find(id); it != features_.end()) return it->second;
+    const Instance& i = instance(id);
+    auto common = [&](sn::MachiningFeature& f) {
+      f.its_id = text(i, 0);
+      f.feature_placement = placement(reference(i, 3), i);
+      f.depth = plane(reference(i, 4), i);
+    };
+    sn::Feature feature;
+    if (i.entity() == "TOOLPATH_FEATURE") {
+      sn::ToolpathFeature t;
+      common(t);
+      feature = t;
+    } else if (i.entity() == "ROUND_HOLE") {
+      sn::RoundHole h;
+      common(h);
+      const Instance& d = expect(reference(i, 5), {"TOLERANCED_LENGTH_MEASURE"}, i);
+      h.diameter.theoretical_size = number(d, 0);
+      const Instance& tol = instance(reference(d, 1));
+      if (tol.entity() == "PLUS_MINUS_VALUE") {
+        h.diameter.upper_limit = number(tol, 0);
+        h.diameter.lower_limit = number(tol, 1);
+        h.diameter.significant_digits = static_cast<int>(attr(tol, 2).as_integer());
+      } else {
+        warn(tol, "tolerance kind not kept (read as +/-0)");
+      }
+      const Instance& bottom = instance(reference(i, 7));
+      if (bottom.entity() == "THROUGH_BOTTOM_CONDITION") h.bottom_condition = sn::ThroughBottomCondition{};
+      else if (bottom.entity() == "CONICAL_HOLE_BOTTOM") h.bottom_condition = sn::ConicalHoleBottom{number(bottom, 0)};
+      else h.bottom_condition = sn::FlatHoleBottom{};
+      feature = h;
+    } else {
+      warn(i, "feature " + i.entity() + " is not read yet (CC2 features come with the feature recogniser): its workingsteps are left out");
+      (void)from;
+      return std::nullopt;
+    }
+    result_.project.features.push_back(std::move(feature));
+    const sn::FeatureRef r{static_cast<std::uint32_t>(result_.project.features.size() - 1)};
+    features_.emplace(id, r);
+    return r;
+  }
+
+  // ---- workplan, workpiece, setup
+  void executable(const Instance& i) {
+    if (i.entity() == "MACHINING_WORKINGSTEP") {
+      sn::MachiningWorkingstep ws;
+      ws.its_id = text(i, 0);
+      ws.its_secplane = plane(reference(i, 1), i);
+      const auto f = feature(reference(i, 2), i);
+      const auto o = operation(reference(i, 3), i);
+      if (!f || !o) return;
+      ws.its_feature = *f;
+      ws.its_operation = *o;
+      result_.project.main_workplan.its_elements.emplace_back(std::move(ws));
+    } else if (i.entity() == "RAPID_MOVEMENT") {
+      sn::RapidMovement r;
+      r.its_id = text(i, 0);
+      r.its_secplane = plane(reference(i, 1), i);
+      if (!attr(i, 2).is_unset()) r.its_toolpath = toolpath_list(reference(i, 2), i);
+      result_.project.main_workplan.its_elements.emplace_back(std::move(r));
+    } else {
+      warn(i, "executable " + i.entity() + " is not read (only workingsteps and rapid movements)");
+    }
+  }
+
+  sn::Workpiece workpiece(const Instance& i) {
+    sn::Workpiece w;
+    w.its_id = text(i, 0);
+    w.global_tolerance = opt_number(i, 2);
+    if (!attr(i, 5).is_unset()) {
+      const Instance& b = instance(reference(i, 5));
+      if (b.entity() == "BLOCK") {
+        w.its_bounding_geometry = sn::Block{placement(reference(b, 1), b), number(b, 2), number(b, 3), number(b, 4)};
+      } else {
+        warn(b, "bounding geometry " + b.entity() + " is not kept (only BLOCK)");
+      }
+    }
+    for (const Value& v : list(i, 6)) w.clamping_positions.push_back(point_ref(reference_in(v, i), i));
+    return w;
+  }
+
+  sn::Setup setup(const Instance& i) {
+    sn::Setup s;
+    s.its_id = text(i, 0);
+    if (!attr(i, 1).is_unset()) s.its_origin = placement(reference(i, 1), i);
+    s.its_secplane = plane(reference(i, 2), i);
+    const auto wps = list(i, 3);
+    if (!wps.empty()) {
+      const Instance& wp = expect(reference_in(wps.front(), i), {"WORKPIECE_SETUP"}, i);
+      s.its_workpiece_setup.its_origin = placement(reference(wp, 1), wp);
+    }
+    return s;
+  }
+
+  const Graph& g_;
+  std::string file_;
+  StepncReadResult result_;
+  InstanceId workpiece_id_ = 0;
+  std::map<InstanceId, sn::ToolRef> tools_;
+  std::map<InstanceId, sn::TechnologyRef> technologies_;
+  std::map<InstanceId, sn::MachineFunctionsRef> functions_;
+  std::map<InstanceId, sn::OperationRef> operations_;
+  std::map<InstanceId, sn::FeatureRef> features_;
+};
+
+}  // namespace
+
+StepncReadResult stepnc_from_graph(const part21::Graph& graph, const std::string& file_name) {
+  return Cc1Reader(graph, file_name).read();
+}
+
+StepncReadResult read_stepnc(std::string_view text, const std::string& file_name) {
+  auto r = part21::read_part21(text, file_name);
+  auto result = stepnc_from_graph(r.graph, file_name);
+  result.warnings.insert(result.warnings.begin(), r.warnings.begin(), r.warnings.end());
+  return result;
+}
+
+StepncReadResult read_stepnc_file(const std::filesystem::path& path) {
+  auto r = part21::read_part21_file(path);
+  auto result = stepnc_from_graph(r.graph, path.string());
+  result.warnings.insert(result.warnings.begin(), r.warnings.begin(), r.warnings.end());
+  return result;
+}
+
+}  // namespace ncbridge::step_writer
