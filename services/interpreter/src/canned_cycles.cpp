@@ -222,13 +222,13 @@ void Executor::canned_cycle(const BlockCommand& b, int motion) {
         if (s_.spindle == Direction::Clockwise) emit(StartSpindleClockwise{0}); else emit(StartSpindleCounterclockwise{0});
         break;
       case 870: {
-        int dir = s_.spindle == Direction::Clockwise ? 1 : 2;
+        int dir = s_.spindle == Direction::Clockwise ? 2 : 3;  // CANON_DIRECTION values
         traverse(aa + i, bb + j, r);
         emit(StopSpindleTurning{0});
         emit(OrientSpindle{0, 0.0, dir});
         traverse(aa + i, bb + j, cc);
         traverse(aa, bb, cc);
-        if (dir == 1) emit(StartSpindleClockwise{0}); else emit(StartSpindleCounterclockwise{0});
+        if (dir == 2) emit(StartSpindleClockwise{0}); else emit(StartSpindleCounterclockwise{0});
         feed(aa, bb, k);
         feed(aa, bb, cc);
         emit(StopSpindleTurning{0});
@@ -236,7 +236,7 @@ void Executor::canned_cycle(const BlockCommand& b, int motion) {
         traverse(aa + i, bb + j, cc);
         traverse(aa + i, bb + j, clear_cc);
         traverse(aa, bb, clear_cc);
-        if (dir == 1) emit(StartSpindleClockwise{0}); else emit(StartSpindleCounterclockwise{0});
+        if (dir == 2) emit(StartSpindleClockwise{0}); else emit(StartSpindleCounterclockwise{0});
         break;
       }
       case 880:

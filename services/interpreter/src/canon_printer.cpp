@@ -59,7 +59,9 @@ std::string_view plane_name(Plane p) {
 void print_pose6(Out& o, const Pose& p) { o.reals({p.x, p.y, p.z, p.a, p.b, p.c}); }
 
 void format(Out& o, const Data& data) {
-  o << name_of(data);
+  // rs274 spells this one without the final H
+  if (std::holds_alternative<StartSpeedFeedSynch>(data)) o << "START_SPEED_FEED_SYNC";
+  else o << name_of(data);
   o << '(';
   std::visit(
       [&o](const auto& d) {

@@ -104,6 +104,7 @@ void Executor::do_g10(const BlockCommand& b) {
       if (system == s_.coord_system) s_.rotation_deg = b.get('r');
     }
     write_parameters();
+    if (system != s_.coord_system) emit(Comment{"interpreter: setting coordinate system origin"});
     if (system == s_.coord_system) {
       apply_origin_change(old);
       emit_g5x();

@@ -343,22 +343,13 @@ class LineParser {
     CommentText comment;
     comment.text = text;
     comment.column = static_cast<std::uint32_t>(start + 1);
-    // "(MSG," with any case and spaces before the comma
+    // "(MSG," after leading blanks, any case, nothing between MSG and the comma
     std::size_t i = 0;
-    auto skip = [&]() { while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i; };
-    skip();
-    bool is_msg = true;
-    for (char c : std::string_view("msg")) {
-      skip();
-      if (i >= text.size() || lower(text[i]) != c) { is_msg = false; break; }
-      ++i;
-    }
-    if (is_msg) {
-      skip();
-      if (i < text.size() && text[i] == ',') {
-        comment.kind = CommentText::Kind::Message;
-        comment.text = text.substr(i + 1);
-      }
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    if (text.size() >= i + 4 && lower(text[i]) == 'm' && lower(text[i + 1]) == 's' && lower(text[i + 2]) == 'g' &&
+        text[i + 3] == ',') {
+      comment.kind = CommentText::Kind::Message;
+      comment.text = text.substr(i + 4);
     }
     b_.comments.push_back(comment);
   }
