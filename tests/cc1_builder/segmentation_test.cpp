@@ -156,3 +156,17 @@ TEST(Segmentation, WorkOffsetBecomesTheSetupOriginAndLaterChangesAreConverted) {
 
 }  // namespace
 }  // namespace ncbridge::cc1_builder::testing
+
+namespace ncbridge::cc1_builder::testing {
+namespace {
+
+TEST(Segmentation, FeedsThatDoNotMoveMakeNoWorkingstep) {
+  CanonicalStream s;
+  s.tool(1).spindle_cw(600).feed(100).rapid(0, 0, 5).rapid(0, 0, 0).line(0, 0, 0).rapid(0, 0, 5).end();
+  const auto p = build_cc1(s.calls, paper_options());
+  EXPECT_EQ(workplan_shape(p), "RR");
+  EXPECT_TRUE(p.operations.empty());
+}
+
+}  // namespace
+}  // namespace ncbridge::cc1_builder::testing

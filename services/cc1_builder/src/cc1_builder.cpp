@@ -179,6 +179,14 @@ struct Cc1Builder::State {
   // ---- cuts
   void close_cut() {
     if (!cut) return;
+    // Feeds that did not move leave empty trajectories; a link with no cut after it goes too.
+    auto& ts = cut->trajectories;
+    ts.erase(std::remove_if(ts.begin(), ts.end(), [](const auto& t) { return t.basiccurve.segments.empty(); }), ts.end());
+    while (!ts.empty() && ts.back().its_type == stepnc::ToolpathType::Connect) ts.pop_back();
+    if (ts.empty()) {
+      cut.reset();
+      return;
+    }
     stepnc::FreeformOperation op;
     const int n = ++freeform_count;
     op.its_id = "FREEFORM" + std::to_string(n) + " " + project.tools[cut->tool.index].its_id;

@@ -1,0 +1,146 @@
+// End to end: programs -> interpreter -> cc1_builder -> Part 21, checked against the ISO 14649
+// schema, the paper's appendix A.1, determinism and write -> read -> write identity.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "ncbridge/cc1_builder/cc1_builder.hpp"
+#include "ncbridge/interpreter/interpreter.hpp"
+#include "ncbridge/setup/stock.hpp"
+#include "ncbridge/setup/tool_list.hpp"
+#include "ncbridge/step_writer/express_schema.hpp"
+#include "ncbridge/step_writer/part21_reader.hpp"
+#include "ncbridge/step_writer/schema_check.hpp"
+#include "ncbridge/step_writer/stepnc_file.hpp"
+
+namespace ncbridge::cc1_builder::testing {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kShared = NCBRIDGE_SHARED_DIR;
+
+stepnc::Project build_from(const fs::path& program, const fs::path& tools, const fs::path& stock) {
+  Options o;
+  o.tools = setup::read_tool_list(tools);
+  o.stock = setup::read_stock(stock);
+  interpreter::Options io;
+  io.tools = o.tools;
+  Cc1Builder builder(o);
+  interpreter::interpret_file(program, io, builder);
+  return builder.take_project();
+}
+
+std::string cc1_text(const stepnc::Project& p) {
+  step_writer::StepncWriteOptions w;
+  w.file_name = "cc1.stp";
+  w.unix_time = 1700000000;
+  return step_writer::write_stepnc(p, w);
+}
+
+const step_writer::express::Schema& schema() {
+  static const auto s = step_writer::express::Schema::parse_file(kShared / "reference/iso14649/combined_schema_iso14649_only.exp");
+  return s;
+}
+
+std::vector<step_writer::Diagnostic> check(const std::string& text, const std::string& name) {
+  const auto read = step_writer::part21::read_part21(text, name);
+  step_writer::CheckOptions c;
+  c.file_name = name;
+  c.known_variants_are_warnings = false;
+  auto all = step_writer::check_instances(read.graph, schema(), c);
+  std::vector<step_writer::Diagnostic> errors;
+  for (auto& d : all) if (d.severity == step_writer::Severity::Error) errors.push_back(d);
+  return errors;
+}
+
+std::string joined(const std::vector<step_writer::Diagnostic>& ds) {
+  std::string s;
+  for (std::size_t i = 0; i < ds.size() && i < 10; ++i) s += ds[i].to_string() + "\n";
+  return s;
+}
+
+TEST(Cc1File, FaceMillHasTheEntitiesOfAppendixA1AndItsThirteenPoints) {
+  const fs::path paper = kShared / "corpus/paper";
+  const auto project = build_from(paper / "face_mill.ngc", paper / "tools.json", paper / "stock.json");
+  const std::string text = cc1_text(project);
+  const auto graph = step_writer::part21::read_part21(text, "face_mill.stp").graph;
+  std::set<std::string> entities;
+  for (const auto& i : graph.instances()) entities.insert(i.entity());
+  for (const char* e : {"PROJECT", "WORKPLAN", "WORKPIECE", "SETUP", "WORKPIECE_SETUP", "MACHINING_WORKINGSTEP",
+                        "RAPID_MOVEMENT", "TOOLPATH_FEATURE", "FREEFORM_OPERATION", "MILLING_CUTTING_TOOL",
+                        "ENDMILL", "MILLING_TOOL_DIMENSION", "CUTTING_COMPONENT", "MILLING_TECHNOLOGY",
+                        "MILLING_MACHINE_FUNCTIONS", "PLANE", "AXIS2_PLACEMENT_3D", "CARTESIAN_POINT", "DIRECTION",
+                        "TOOLPATH_LIST", "CUTTER_LOCATION_TRAJECTORY", "POLYLINE"}) {
+    EXPECT_TRUE(entities.count(e)) << e;
+  }
+  // The freeform operation's toolpath: one POLYLINE with the paper's 13 points.
+  const auto ops = graph.ids_of("FREEFORM_OPERATION");
+  ASSERT_EQ(ops.size(), 1u);
+  const auto& list = graph.at(graph.at(ops[0]).attributes()[0].as_reference());
+  const auto& traj = graph.at(list.attributes()[0].as_list().at(0).as_reference());
+  const auto& poly = graph.at(traj.attributes()[6].as_reference());
+  ASSERT_EQ(poly.entity(), "POLYLINE");
+  const std::vector<std::array<double, 3>> expected{
+      {91.9, -13.5, 15}, {91.9, -13.5, 0}, {91.9, 133.5, 0}, {74.8, 133.5, 0}, {74.8, -13.5, 0},
+      {57.7, -13.5, 0},  {57.7, 133.5, 0}, {40.6, 133.5, 0}, {40.6, -13.5, 0}, {23.5, -13.5, 0},
+      {23.5, 133.5, 0},  {6.4, 133.5, 0},  {6.4, -13.5, 0}};
+  const auto& pts = poly.attributes()[1].as_list();
+  ASSERT_EQ(pts.size(), expected.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const auto& c = graph.at(pts[i].as_reference()).attributes()[1].as_list();
+    for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(c[k].as_number(), expected[i][k]) << "point " << i;
+  }
+  // Technology: 240 mm/min = 0.004 m/s, 720 rpm clockwise = -12 rev/s; flood coolant on.
+  const auto& tech = graph.at(graph.ids_of("MILLING_TECHNOLOGY").at(0));
+  EXPECT_DOUBLE_EQ(tech.attributes()[0].as_number(), 0.004);
+  EXPECT_DOUBLE_EQ(tech.attributes()[3].as_number(), -12);
+  EXPECT_EQ(graph.at(graph.ids_of("MILLING_MACHINE_FUNCTIONS").at(0)).attributes()[0].as_enumeration(), "T");
+  EXPECT_EQ(check(text, "face_mill.stp").size(), 0u) << joined(check(text, "face_mill.stp"));
+}
+
+TEST(Cc1File, SameInputGivesTheSameBytes) {
+  const fs::path paper = kShared / "corpus/paper";
+  const auto a = cc1_text(build_from(paper / "test_part.ngc", paper / "tools.json", paper / "stock.json"));
+  const auto b = cc1_text(build_from(paper / "test_part.ngc", paper / "tools.json", paper / "stock.json"));
+  EXPECT_EQ(a, b);
+}
+
+struct Program {
+  fs::path program, tools, stock;
+};
+
+std::vector<Program> corpus_programs() {
+  std::vector<Program> programs;
+  const fs::path paper = kShared / "corpus/paper";
+  for (const char* name : {"face_mill.ngc", "test_part.ngc"}) programs.push_back({paper / name, paper / "tools.json", paper / "stock.json"});
+  std::vector<fs::path> parts;
+  for (const auto& d : fs::directory_iterator(kShared / "corpus/cam")) parts.push_back(d.path());
+  std::sort(parts.begin(), parts.end());
+  // part.nc is the LinuxCNC post where there is no part.linuxcnc.ngc (else a Fanuc post).
+  for (const auto& d : parts) {
+    const fs::path program = fs::exists(d / "part.linuxcnc.ngc") ? d / "part.linuxcnc.ngc" : d / "part.nc";
+    programs.push_back({program, d / "tools.json", d / "stock.json"});
+  }
+  return programs;
+}
+
+TEST(Cc1File, EveryCorpusProgramGivesASchemaValidFileThatReadsBackIdentically) {
+  const auto programs = corpus_programs();
+  ASSERT_EQ(programs.size(), 7u);
+  for (const auto& p : programs) {
+    SCOPED_TRACE(p.program.string());
+    const auto project = build_from(p.program, p.tools, p.stock);
+    EXPECT_FALSE(project.main_workplan.its_elements.empty());
+    const std::string text = cc1_text(project);
+    const auto errors = check(text, p.program.filename().string());
+    EXPECT_EQ(errors.size(), 0u) << joined(errors);
+    const auto back = step_writer::read_stepnc(text, "written.stp");
+    EXPECT_TRUE(back.warnings.empty());
+    EXPECT_EQ(cc1_text(back.project), text);
+  }
+}
+
+}  // namespace
+}  // namespace ncbridge::cc1_builder::testing
