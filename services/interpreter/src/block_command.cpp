@@ -23,7 +23,7 @@ int g_group(int g) {
     case 930: case 940: case 950: return kGFeedMode;
     case 200: case 210: return kGUnits;
     case 400: case 410: case 420: case 411: case 421: return kGCutterComp;
-    case 430: case 431: case 490: return kGToolLength;
+    case 430: case 431: case 432: case 490: return kGToolLength;
     case 980: case 990: return kGRetract;
     case 540: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
       return kGCoordSystem;

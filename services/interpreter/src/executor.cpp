@@ -63,7 +63,7 @@ void Executor::start() {
   emit(UseLengthUnits{s_.units});
   emit_g5x();
   emit_g92();
-  emit(SetXyRotation{s_.rotation_deg});
+  emit(SetXyRotation{s_.rotation()});
   emit(SetFeedReference{FeedReference::Xyz});
   emit(OnReset{});
 }
@@ -109,21 +109,29 @@ bool Executor::execute(const BlockCommand& b, const Source& source, const std::s
     default: break;
   }
   // motion: the block's motion code, or the modal one when axis words are present
-  bool axis_motion = g0 != 100 && g0 != 280 && g0 != 300 && g0 != 920 && b.has_axis();
+  bool axis_motion = g0 != 100 && g0 != 280 && g0 != 300 && g0 != 920 && b.g[kGToolLength] != 431 && b.has_axis();
   if (b.g[kGMotion] != -1) {
     do_motion(b, b.g[kGMotion], g0 == 530);
   } else if (axis_motion) {
     do_motion(b, s_.motion, g0 == 530);
   }
   // STEP 5: stops
-  if (b.m[kMStop] != -1) return do_stop(b);
-  return false;
+  bool ended = b.m[kMStop] != -1 && do_stop(b);
+  write_position_parameters();
+  return ended;
+}
+
+// #5420-#5428: the current position in program coordinates.
+void Executor::write_position_parameters() {
+  const Pose& p = s_.position;
+  const double values[9] = {p.x, p.y, p.z, p.a, p.b, p.c, p.u, p.v, p.w};
+  for (int i = 0; i < 9; ++i) params_.set_numbered(5420 + i, values[i]);
 }
 
 void Executor::check_block(const BlockCommand& b) {
   int g0 = b.g[kGNonModal];
   int motion = b.g[kGMotion];
-  bool g0_uses_axes = g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920;
+  bool g0_uses_axes = g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || b.g[kGToolLength] == 431;
   if (g0_uses_axes && motion != -1 && motion != 800 && b.has_axis()) {
     fail(b.g_column[kGMotion], "Cannot use two G codes that both use axis values");
   }

@@ -72,6 +72,7 @@ class Executor final : public ComputedParameters {
   void emit_g5x();
   void emit_g92();
   void write_parameters();
+  void write_position_parameters();
 
   // motion.cpp
   void do_motion(const BlockCommand& b, int motion, bool g53);

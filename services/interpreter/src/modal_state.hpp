@@ -35,7 +35,8 @@ struct ModalState {
   bool g92_active = false;          // #5210
   canonical::Pose g28_mm{}, g30_mm{};
   canonical::Pose tool_offset_mm{};
-  double rotation_deg = 0;
+  std::array<double, 10> rotation_deg{};  // G10 L2 R, per coordinate system [1..9]
+  double rotation() const { return rotation_deg[static_cast<std::size_t>(coord_system)]; }
 
   canonical::Pose position{};       // program coordinates of the tool, current units
 

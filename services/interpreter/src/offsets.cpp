@@ -31,16 +31,20 @@ void Executor::emit_g92() {
   emit(SetG92Offset{s_.g92_active ? to_units(s_.g92_mm) : Pose{}});
 }
 
-// Parameters mirror the offsets (in the current units, as a program reading them expects).
+// Parameters mirror the offsets in machine units: inches, as in LinuxCNC's standalone rs274.
 void Executor::write_parameters() {
+  constexpr double kMachineUnitMm = 25.4;
   for (int axis = 0; axis < 9; ++axis) {
-    double k = is_linear(axis) ? s_.mm_per_unit() : 1.0;
+    double k = is_linear(axis) ? kMachineUnitMm : 1.0;
     params_.set_numbered(5161 + axis, s_.g28_mm.*kFields[axis] / k);
     params_.set_numbered(5181 + axis, s_.g30_mm.*kFields[axis] / k);
     params_.set_numbered(5211 + axis, s_.g92_mm.*kFields[axis] / k);
     for (int system = 1; system <= 9; ++system) {
       params_.set_numbered(5201 + 20 * system + axis, s_.g5x_mm[static_cast<std::size_t>(system)].*kFields[axis] / k);
     }
+  }
+  for (int system = 1; system <= 9; ++system) {
+    params_.set_numbered(5210 + 20 * system, s_.rotation_deg[static_cast<std::size_t>(system)]);
   }
   params_.set_numbered(5210, s_.g92_active ? 1.0 : 0.0);
   params_.set_numbered(5220, s_.coord_system);
@@ -69,7 +73,7 @@ void Executor::do_coordinate_system(int g) {
   params_.set_numbered(5220, system);
   emit_g5x();
   emit_g92();
-  emit(SetXyRotation{s_.rotation_deg});
+  emit(SetXyRotation{s_.rotation()});
 }
 
 void Executor::do_g10(const BlockCommand& b) {
@@ -100,15 +104,13 @@ void Executor::do_g10(const BlockCommand& b) {
                                 (axis == 2 || axis == 0 ? s_.tool_offset_mm.*kFields[axis] : 0.0);
       }
     }
-    if (b.has('r')) {
-      if (system == s_.coord_system) s_.rotation_deg = b.get('r');
-    }
+    if (b.has('r')) s_.rotation_deg[static_cast<std::size_t>(system)] = b.get('r');
     write_parameters();
     if (system != s_.coord_system) emit(Comment{"interpreter: setting coordinate system origin"});
     if (system == s_.coord_system) {
       apply_origin_change(old);
       emit_g5x();
-      emit(SetXyRotation{s_.rotation_deg});
+      emit(SetXyRotation{s_.rotation()});
     }
     return;
   }

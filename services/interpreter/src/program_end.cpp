@@ -26,8 +26,7 @@ bool Executor::do_stop(const BlockCommand& b) {
   apply_origin_change(old);
   params_.set_numbered(5220, 1.0);
   emit_g5x();
-  s_.rotation_deg = 0;
-  emit(SetXyRotation{0.0});
+  emit(SetXyRotation{s_.rotation()});
   if (s_.plane != Plane::XY) {
     emit(SelectPlane{Plane::XY});
     s_.plane = Plane::XY;

@@ -92,6 +92,17 @@ void Executor::do_tool_length_offset(const BlockCommand& b, int g) {
         offset_mm.x = t->x_offset;
       }
     }
+  } else if (g == 432) {
+    // G43.2: add another tool's offset to the one in effect
+    offset_mm = s_.tool_offset_mm;
+    if (!b.has('h')) fail(b.g_column[kGToolLength], "G43.2 needs an H word");
+    int tool = static_cast<int>(std::lround(b.get('h')));
+    if (tool != 0) {
+      const setup::Tool* t = options_.tools.find(tool);
+      if (t == nullptr) fail(b.col('h'), "Tool " + std::to_string(tool) + " has no tool length offset (not in the tool table)");
+      offset_mm.z += t->length;
+      offset_mm.x += t->x_offset;
+    }
   } else if (g == 431) {
     for (char letter : {'x', 'y', 'z', 'u', 'v', 'w'}) {
       if (!b.has(letter)) continue;
