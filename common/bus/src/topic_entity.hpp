@@ -1,0 +1,25 @@
+#pragma once
+// Internal: the DDS topic entity of a Topic, with the one envelope type.
+#include <string>
+
+#include "dds_check.hpp"
+#include "envelope.h"
+#include "ncbridge/bus/topics.hpp"
+
+namespace ncbridge::bus::detail {
+
+inline dds_entity_t create_topic(dds_entity_t participant, Topic topic) {
+  const std::string name(topic_name(topic));
+  return check(dds_create_topic(participant, &ncbridge_bus_Envelope_desc, name.c_str(), nullptr, nullptr),
+               "dds_create_topic");
+}
+
+// A key-only sample for instance operations; points into the strings, owns nothing.
+inline ncbridge_bus_Envelope key_sample(const std::string& key, const std::string& subkey) {
+  ncbridge_bus_Envelope s{};
+  s.id = const_cast<char*>(key.c_str());
+  s.sub_id = const_cast<char*>(subkey.c_str());
+  return s;
+}
+
+}  // namespace ncbridge::bus::detail
