@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
 #include <string>
 
 #include "ncbridge/common/error.hpp"
@@ -152,4 +153,22 @@ TEST(SchemaCheck, DiagnosticsPrintAsFileLineSeverity) {
   std::string line = d[0].to_string();
   EXPECT_NE(line.find("wrong_attr_count.stp:65: error: #10 MACHINING_WORKINGSTEP: has 4 attributes"), std::string::npos)
       << line;
+}
+
+TEST(SchemaCheck, Ap203PartAgainstAp203SchemaOnlyMissesTheSecondSchemasEntities) {
+  // Like STEPcode (corpus/STEP-PROVENANCE.md): a one-schema check of a two-schema AP203 file
+  // reports the presentation entities of SHAPE_APPEARANCE_LAYER_MIM as unknown, and nothing else.
+  // Also exercises complex instances (SI_UNIT redeclares NAMED_UNIT.dimensions as DERIVE: `*`).
+  auto schema = express::Schema::parse_file(fs::path(NCBRIDGE_SHARED_DIR) /
+                                            "reference/iso14649/ap203_config_control_design.exp");
+  fs::path path = fs::path(NCBRIDGE_SHARED_DIR) / "corpus/brep/occt_trj2_io1-ug-203.stp";
+  auto d = check_instances(read_part21_file(path).graph, schema, {path.string()});
+  ASSERT_FALSE(d.empty());
+  std::set<std::string> unknown;
+  for (const auto& x : d) {
+    EXPECT_NE(x.message.find("is not in schema CONFIG_CONTROL_DESIGN"), std::string::npos) << x.to_string();
+    unknown.insert(x.entity);
+  }
+  EXPECT_TRUE(unknown.count("DRAUGHTING_PRE_DEFINED_COLOUR"));
+  EXPECT_TRUE(unknown.count("CURVE_STYLE"));
 }

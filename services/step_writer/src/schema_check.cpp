@@ -82,14 +82,27 @@ class Checker {
       }
       const express::Entity& entity = *schema_.entity(name);
       if (complex) {
+        // A partial record carries its entity's own attributes; one that another partial entity
+        // of the instance redeclares as DERIVE (SI_UNIT's NAMED_UNIT.dimensions) is written *.
         std::vector<express::InstanceAttribute> own;
-        for (const auto& a : entity.attributes) own.push_back({&a, entity.name, false});
+        for (const auto& a : entity.attributes) own.push_back({&a, entity.name, redeclared_derived(instance, name, a.name)});
         check_attributes(at, record.attributes, own, name);
       } else {
         if (entity.abstract) report(Severity::Error, at, "entity " + name + " is ABSTRACT and cannot be instantiated");
         check_attributes(at, record.attributes, schema_.instance_attributes(name), name);
       }
     }
+  }
+
+  bool redeclared_derived(const Instance& instance, const std::string& owner, const std::string& attribute) const {
+    for (const auto& other : instance.records) {
+      std::string n = schema_name_of(other.entity);
+      const express::Entity* e = n.empty() ? nullptr : schema_.entity(n);
+      if (!e || n == owner || !schema_.is_subtype_of(n, owner)) continue;
+      for (const auto& d : e->derived)
+        if (upper(d) == upper(attribute)) return true;
+    }
+    return false;
   }
 
   void check_attributes(Context at, const std::vector<Value>& values,
@@ -100,6 +113,7 @@ class Checker {
       report(Severity::Error, at,
              "has " + std::to_string(values.size()) + " attributes, " + name + " has " +
                  std::to_string(expected.size()) + " (" + names + ")");
+      return;  // the values no longer line up with the attributes: checking them would mislead
     }
     std::size_t n = std::min(values.size(), expected.size());
     for (std::size_t k = 0; k < n; ++k) {
