@@ -97,7 +97,7 @@ void ControlFlowRunner::run(std::unique_ptr<TextSource> source, const std::strin
     if (!read_line(false)) {
       if (!frames_.empty()) fail(0, "File ended inside subroutine (missing endsub)");
       if (options_.require_program_end) {
-        throw InputError({file_name(), line_, 0}, "File ended with no percent sign or program end");
+        throw InputError({file_name(), line_, 1}, "File ended with no percent sign or program end");
       }
       return;
     }
@@ -247,6 +247,7 @@ bool ControlFlowRunner::run_statement() {
       }
       params_.set_named("_value", 0.0);
       params_.set_named("_value_returned", 0.0);
+      call_column_ = col;
       call(label);
       return false;
     }
@@ -392,7 +393,7 @@ void ControlFlowRunner::call(const std::string& label) {
   std::uint32_t caller_line = line_;
   if (!skip_to(label, bit(StatementKind::Sub))) {
     line_ = caller_line;
-    throw InputError({file_name(), caller_line, 0}, "Unable to find subroutine o" + label);
+    throw InputError({file_name(), caller_line, call_column_}, "Unable to find subroutine o" + label);
   }
   subs_[label] = SubDefinition{current_file_, next_offset_, line_};
 }

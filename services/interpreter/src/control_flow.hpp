@@ -89,6 +89,7 @@ class ControlFlowRunner {
   std::vector<Loop> loops_;
   std::unordered_map<std::string, SubDefinition> subs_;
   std::filesystem::path main_directory_;
+  std::uint32_t call_column_ = 1;
   bool percent_mode_ = false;
   bool seen_content_ = false;
 };

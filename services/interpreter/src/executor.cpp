@@ -151,6 +151,7 @@ void Executor::check_block(const BlockCommand& b) {
                          s_.motion == 880 || s_.motion == 890))) {
     fail(b.col('p'), "P word with no G code or M code that uses it");
   }
+  if (b.has('e')) fail(b.col('e'), "E word with no G70, G76, M66, M67 or M68 to use it");
   if (g0 == 40 && !b.has('p')) fail(b.g_column[kGNonModal], "Dwell time P word missing with G4");
 }
 
@@ -185,6 +186,7 @@ void Executor::do_feed_mode(int g) {
 }
 
 void Executor::do_feed_rate(const BlockCommand& b) {
+  if (b.get('f') < 0) fail(b.col('f'), "Negative f word used");
   s_.feed_rate = b.get('f');
   emit(SetFeedRate{s_.feed_rate});
 }
@@ -331,6 +333,13 @@ void Executor::do_cutter_comp(const BlockCommand& b, int g) {
     emit(Comment{"interpreter: cutter radius compensation off"});
     s_.comp_side = Side::Off;
     return;
+  }
+  if (b.has('d')) {
+    int tool = static_cast<int>(std::lround(b.get('d')));
+    if (tool < 0) fail(b.col('d'), "Negative D word tool radius index used");
+    if (tool != 0 && options_.tools.find(tool) == nullptr) {
+      fail(b.col('d'), "Requested tool " + std::to_string(tool) + " not found in the tool table");
+    }
   }
   fail(b.g_column[kGCutterComp],
        "cutter radius compensation (G41/G42) is not yet supported by this interpreter");

@@ -205,6 +205,19 @@ class LineParser {
     fail(start, std::string("Bad character '") + s_[pos_] + "' where a value was expected");
   }
 
+  // Whether the letters at pos_ name a function (sin[...], atan[...], exists[...]).
+  bool function_follows() {
+    std::size_t save = pos_;
+    char buf[8];
+    std::string_view name = letters(buf, sizeof buf);
+    pos_ = save;
+    for (std::string_view f : {"abs", "acos", "asin", "atan", "cos", "exp", "exists", "fix", "fup", "round",
+                               "ln", "sin", "sqrt", "tan", "not"}) {
+      if (f == name) return true;
+    }
+    return false;
+  }
+
   ExprRef read_function() {
     std::size_t start = pos_;
     char buf[8];
@@ -379,6 +392,9 @@ class LineParser {
     }
     if (is_alpha(c) && c != 'n' && c != 'o') {
       ++pos_;
+      if (!at_end() && is_alpha(s_[pos_]) && !function_follows()) {
+        fail(start, std::string(1, static_cast<char>(c - 'a' + 'A')) + " word has no value (bad number format)");
+      }
       Word w;
       w.letter = c;
       w.column = static_cast<std::uint32_t>(start + 1);
