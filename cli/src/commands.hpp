@@ -7,5 +7,6 @@ namespace ncbridge::cli {
 // Adds the subcommand to `app`; the callback it installs runs the command and sets the exit code.
 void add_canon_command(CLI::App& app, int& exit_code);
 void add_check_command(CLI::App& app, int& exit_code);  // Part 21 schema check (step_writer)
+void add_convert_command(CLI::App& app, int& exit_code);  // program -> CC1 file (embedded pipeline)
 
 }  // namespace ncbridge::cli

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   ncbridge::cli::add_canon_command(app, exit_code);
   ncbridge::cli::add_check_command(app, exit_code);
+  ncbridge::cli::add_convert_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -2,6 +2,7 @@
 // schema, the paper's appendix A.1, determinism and write -> read -> write identity.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -105,6 +106,18 @@ TEST(Cc1File, SameInputGivesTheSameBytes) {
   const auto a = cc1_text(build_from(paper / "test_part.ngc", paper / "tools.json", paper / "stock.json"));
   const auto b = cc1_text(build_from(paper / "test_part.ngc", paper / "tools.json", paper / "stock.json"));
   EXPECT_EQ(a, b);
+}
+
+TEST(Cc1File, WithSourceDateEpochTwoRunsGiveTheSameBytes) {
+  const fs::path paper = kShared / "corpus/paper";
+  ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
+  step_writer::StepncWriteOptions w;  // no explicit time: the writer reads SOURCE_DATE_EPOCH
+  w.file_name = "face_mill.stp";
+  const auto a = step_writer::write_stepnc(build_from(paper / "face_mill.ngc", paper / "tools.json", paper / "stock.json"), w);
+  const auto b = step_writer::write_stepnc(build_from(paper / "face_mill.ngc", paper / "tools.json", paper / "stock.json"), w);
+  ::unsetenv("SOURCE_DATE_EPOCH");
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a.find("'2023-11-14T22:13:20'"), std::string::npos);
 }
 
 struct Program {

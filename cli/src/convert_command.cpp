@@ -1,0 +1,209 @@
+// `ncbridge convert PROGRAM --tools T --stock S -o OUT.stp [--report R.json]`: the embedded
+// pipeline interpreter -> cc1_builder -> step_writer in one process. The output is written
+// atomically: a failed run leaves no file (and an old OUT.stp untouched).
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "ncbridge/cc1_builder/cc1_builder.hpp"
+#include "ncbridge/common/error.hpp"
+#include "ncbridge/interpreter/interpreter.hpp"
+#include "ncbridge/setup/stock.hpp"
+#include "ncbridge/setup/tool_list.hpp"
+#include "ncbridge/step_writer/atomic_file.hpp"
+#include "ncbridge/step_writer/part21_writer.hpp"
+#include "ncbridge/step_writer/stepnc_file.hpp"
+
+namespace ncbridge::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct ConvertArguments {
+  std::string program;
+  std::string tools;
+  std::string stock;
+  std::string dialect = "rs274ngc";
+  std::string level = "cc1";
+  std::string output;
+  std::string report;
+  std::string subroutine_path;
+  std::optional<double> security_plane;
+};
+
+double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
+
+interpreter::Dialect dialect_of(const std::string& name) {
+  if (name == "fanuc") return interpreter::Dialect::Fanuc;
+  if (name == "mach3") return interpreter::Dialect::Mach3;
+  if (name == "siemens840d") return interpreter::Dialect::Siemens840D;
+  if (name == "heidenhain") return interpreter::Dialect::Heidenhain;
+  if (name == "auto") return interpreter::Dialect::Auto;
+  return interpreter::Dialect::Rs274Ngc;
+}
+
+// Forwards the stream to the builder, timing the builder's share and showing progress on a
+// terminal.
+class TimedSink final : public canonical::Sink {
+ public:
+  TimedSink(cc1_builder::Cc1Builder& builder, bool progress) : builder_(builder), progress_(progress) {}
+  void source_file(std::uint32_t index, std::string_view path) override { builder_.source_file(index, path); }
+  void call(const canonical::Call& c) override {
+    const auto start = Clock::now();
+    builder_.call(c);
+    spent_ += Clock::now() - start;
+    if (progress_ && (++calls_ & 0xFFFF) == 0) {
+      std::fprintf(stderr, "\rconverting: line %u, %llu canonical calls", c.source.line,
+                   static_cast<unsigned long long>(calls_));
+      std::fflush(stderr);
+      shown_ = true;
+    }
+  }
+  void end() override {
+    const auto start = Clock::now();
+    builder_.end();
+    spent_ += Clock::now() - start;
+    clear();
+  }
+  void clear() {
+    if (shown_) std::fprintf(stderr, "\r\033[K");
+    shown_ = false;
+  }
+  Clock::duration spent() const { return spent_; }
+
+ private:
+  cc1_builder::Cc1Builder& builder_;
+  bool progress_;
+  bool shown_ = false;
+  std::uint64_t calls_ = 0;
+  Clock::duration spent_{};
+};
+
+std::string_view kind_of(const stepnc::Executable& e) {
+  return std::holds_alternative<stepnc::RapidMovement>(e) ? "RAPID_MOVEMENT" : "MACHINING_WORKINGSTEP";
+}
+
+nlohmann::ordered_json report_of(const ConvertArguments& args, const stepnc::Project& p,
+                         const std::vector<cc1_builder::Warning>& warnings, std::uint64_t calls,
+                         std::size_t bytes, const nlohmann::ordered_json& timings) {
+  using json = nlohmann::ordered_json;
+  json workingsteps = json::array();
+  for (const auto& e : p.main_workplan.its_elements) {
+    json w;
+    w["kind"] = kind_of(e);
+    std::visit([&](const auto& x) {
+      w["id"] = x.its_id;
+      if (x.source.first_line != 0) w["lines"] = {x.source.first_line, x.source.last_line};
+    }, e);
+    if (const auto* ws = std::get_if<stepnc::MachiningWorkingstep>(&e)) {
+      const auto& op = p.operation(ws->its_operation);
+      const auto& mop = stepnc::machining_operation(op);
+      w["operation"] = stepnc::entity_name(op);
+      w["feature"] = stepnc::feature_id(p.feature(ws->its_feature));
+      w["tool"] = p.tool(mop.its_tool).its_id;
+      const auto& t = p.technology(mop.its_technology);
+      if (t.feedrate) w["feedrate_m_per_s"] = *t.feedrate;
+      if (t.spindle) w["spindle_rev_per_s"] = *t.spindle;
+    }
+    workingsteps.push_back(std::move(w));
+  }
+  json tools = json::array();
+  for (const auto& t : p.tools) {
+    tools.push_back({{"number", t.number}, {"id", t.its_id}, {"diameter_mm", t.dimension.diameter}});
+  }
+  json features = json::array();
+  for (const auto& f : p.features) features.push_back({{"id", stepnc::feature_id(f)}, {"type", stepnc::entity_name(f)}});
+  json warning_list = json::array();
+  for (const auto& w : warnings) warning_list.push_back({{"where", w.where.to_string()}, {"message", w.message}});
+  return json{{"program", args.program},
+              {"output", args.output},
+              {"level", args.level},
+              {"canonical_calls", calls},
+              {"output_bytes", bytes},
+              {"workingsteps", workingsteps},
+              {"tools", tools},
+              {"features", features},
+              {"warnings", warning_list},
+              {"timings_ms", timings}};
+}
+
+int run_convert(const ConvertArguments& args) {
+  const auto t0 = Clock::now();
+  cc1_builder::Options options;
+  options.tools = setup::read_tool_list(args.tools);
+  options.stock = setup::read_stock(args.stock);
+  options.security_plane_z = args.security_plane;
+  interpreter::Options interp;
+  interp.dialect = dialect_of(args.dialect);
+  interp.tools = options.tools;
+  std::stringstream dirs(args.subroutine_path);
+  for (std::string d; std::getline(dirs, d, ':');) {
+    if (!d.empty()) interp.subroutine_path.emplace_back(d);
+  }
+
+  cc1_builder::Cc1Builder builder(options);
+  TimedSink sink(builder, isatty(STDERR_FILENO) != 0);
+  const auto t_interpret = Clock::now();
+  try {
+    interpreter::interpret_file(args.program, interp, sink);
+  } catch (...) {
+    sink.clear();
+    throw;
+  }
+  const auto t_built = Clock::now();
+  const std::vector<cc1_builder::Warning> warnings = builder.warnings();
+  const std::uint64_t calls = builder.calls_seen();
+  const stepnc::Project project = builder.take_project();
+
+  step_writer::StepncWriteOptions write;
+  write.file_name = std::filesystem::path(args.output).filename().string();
+  const std::string text = step_writer::write_stepnc(project, write);
+  const auto t_written = Clock::now();
+  step_writer::write_file_atomically(args.output, text);
+  const auto t_done = Clock::now();
+
+  for (const auto& w : warnings) std::fprintf(stderr, "%s: warning: %s\n", w.where.to_string().c_str(), w.message.c_str());
+  if (!args.report.empty()) {
+    const double builder_ms = ms(sink.spent());
+    const nlohmann::ordered_json timings{{"read_inputs", ms(t_interpret - t0)},
+                                 {"interpreter", ms(t_built - t_interpret) - builder_ms},
+                                 {"cc1_builder", builder_ms},
+                                 {"step_writer", ms(t_written - t_built)},
+                                 {"output", ms(t_done - t_written)},
+                                 {"total", ms(t_done - t0)}};
+    const auto report = report_of(args, project, warnings, calls, text.size(), timings);
+    step_writer::write_file_atomically(args.report, report.dump(2) + "\n");
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_convert_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ConvertArguments>();
+  CLI::App* cmd = app.add_subcommand("convert", "Convert a part program into an ISO 14649 (STEP-NC) Part 21 file");
+  cmd->add_option("program", args->program, "Part program")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML, docs/formats/stock.md)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--dialect", args->dialect, "Program dialect")
+      ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));
+  cmd->add_option("--level", args->level, "Conformance class of the output")->check(CLI::IsMember({"cc1"}));
+  cmd->add_option("-o,--output", args->output, "Part 21 file to write")->required();
+  cmd->add_option("--report", args->report, "Also write a JSON report (docs/formats/report.md)");
+  cmd->add_option("--security-plane", args->security_plane, "Security plane Z in mm (default: the highest rapid)");
+  cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
+  cmd->callback([args, &exit_code]() { exit_code = run_convert(*args); });
+}
+
+}  // namespace ncbridge::cli
