@@ -1,1 +1,85 @@
+// Recognition of the corpus (5 FreeCAD parts, 2 programs of Xú et al. 2014), comments
+// stripped, scored against truth: F1 >= 0.95 on every program.
 #include <gtest/gtest.h>
+
+#include "recognition_corpus.hpp"
+
+namespace fr = ncbridge::feature_recognizer;
+namespace ts = ncbridge::test_support;
+
+namespace {
+
+std::vector<ts::RecognitionCase> corpus() { return ts::recognition_corpus(NCBRIDGE_SOURCE_DIR, NCBRIDGE_SHARED_DIR); }
+
+ts::RecognitionCase named(const std::string& name) {
+  for (const auto& c : corpus()) {
+    if (c.name == name) return c;
+  }
+  ADD_FAILURE() << "no case " << name;
+  return {};
+}
+
+}  // namespace
+
+class CorpusScore : public testing::TestWithParam<std::string> {};
+
+TEST_P(CorpusScore, F1AtLeast95Percent) {
+  const auto c = named(GetParam());
+  const auto features = ts::recognize_case(c);
+  const auto s = fr::score(features, fr::read_truth(c.truth, c.truth_program));
+  for (const auto& [type, t] : s.per_type) {
+    EXPECT_GE(t.f1(), 0.95) << fr::to_string(type) << ": truth " << t.truth << ", found " << t.recognized
+                            << ", matched " << t.matched;
+  }
+  EXPECT_GE(s.overall.f1(), 0.95);
+  RecordProperty("f1", std::to_string(s.overall.f1()));
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, CorpusScore,
+                         testing::Values("p01_block_reference", "p02_plate_center_zero", "p03_bracket_steps",
+                                         "p04_open_pockets", "p05_slots", "paper_face_mill", "paper_test_part"));
+
+TEST(PaperPrograms, FaceMillIsExactlyOneBidirectionalPlanarFaceOfDepthFive) {
+  const auto features = ts::recognize_case(named("paper_face_mill"));
+  ASSERT_EQ(features.size(), 1u);
+  const auto& f = features[0];
+  EXPECT_EQ(f.type, fr::FeatureType::PlanarFace);
+  EXPECT_DOUBLE_EQ(f.depth(), 5);
+  ASSERT_EQ(f.operations.size(), 1u);
+  EXPECT_EQ(f.operations[0].type, fr::OperationType::PlaneFinishMilling);
+  EXPECT_EQ(f.operations[0].strategy, fr::Strategy::Bidirectional);
+  EXPECT_NEAR(f.operations[0].radial_depth, 17.1, 1e-6);
+  EXPECT_NEAR(f.profile.length, 120, 0.01);  // along Y, the passes' direction
+}
+
+TEST(PaperPrograms, TestPartPocketIsRoughedThenFinishedAndTheHoleDrilledThenReamed) {
+  const auto features = ts::recognize_case(named("paper_test_part"));
+  ASSERT_EQ(features.size(), 3u);
+  const auto& face = features[0];
+  EXPECT_EQ(face.type, fr::FeatureType::PlanarFace);
+  ASSERT_EQ(face.operations.size(), 1u);
+  EXPECT_EQ(face.operations[0].layers, 2);
+  EXPECT_NEAR(face.operations[0].axial_depth, 2.5, 1e-9);
+
+  const auto& pocket = features[1];
+  EXPECT_EQ(pocket.type, fr::FeatureType::ClosedPocket);
+  EXPECT_EQ(pocket.profile.shape, fr::ProfileShape::Rectangular);
+  EXPECT_NEAR(pocket.profile.length, 80, 0.05);
+  EXPECT_NEAR(pocket.profile.width, 50, 0.05);
+  EXPECT_NEAR(pocket.profile.corner_radius, 10, 0.2);
+  EXPECT_NEAR(pocket.profile.angle_deg, 90, 1e-6);
+  ASSERT_EQ(pocket.operations.size(), 2u);
+  EXPECT_EQ(pocket.operations[0].type, fr::OperationType::BottomAndSideRoughMilling);
+  EXPECT_EQ(pocket.operations[0].layers, 5);
+  EXPECT_NEAR(pocket.operations[0].bottom_allowance, 0.5, 1e-9);
+  EXPECT_NEAR(pocket.operations[0].side_allowance, 1.0, 0.05);
+  EXPECT_EQ(pocket.operations[1].type, fr::OperationType::BottomAndSideFinishMilling);
+  EXPECT_EQ(pocket.operations[1].layers, 6);
+
+  const auto& hole = features[2];
+  EXPECT_EQ(hole.type, fr::FeatureType::RoundHole);
+  EXPECT_EQ(hole.bottom, fr::BottomCondition::Through);
+  ASSERT_EQ(hole.operations.size(), 2u);
+  EXPECT_EQ(hole.operations[0].tool_number, 2);
+  EXPECT_EQ(hole.operations[1].type, fr::OperationType::Reaming);
+}

@@ -72,6 +72,7 @@ std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>&
     }
     flush();
   }
+  for (std::size_t i = 0; i < passes.size(); ++i) passes[i].sequence = i;
   for (auto& pass : passes) {
     pass.z_min = pass.z_max = pass.points.front().z;
     for (const auto& p : pass.points) {
@@ -104,6 +105,7 @@ bool is_freeform(const CuttingPass& pass) {
 Layer make_layer(const CuttingPass& pass, const ToolpathWorkingstep& ws, std::vector<Point3> path) {
   Layer layer;
   layer.workingsteps = {pass.workingstep};
+  layer.sequence = pass.sequence;
   layer.tool = ws.tool;
   layer.feed = ws.feed;
   layer.spindle_rpm = ws.spindle_rpm;
@@ -225,6 +227,7 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
       }
       DrillPass d;
       d.workingstep = pass.workingstep;
+      d.sequence = pass.sequence;
       d.tool = ws.tool;
       d.at = {pass.points.front().x, pass.points.front().y};
       d.z_bottom = pass.z_min;

@@ -20,6 +20,7 @@ struct ArcPiece {
 // Feed moves of one workingstep between two rapids, arcs as chords within the tolerance.
 struct CuttingPass {
   std::size_t workingstep = 0;
+  std::size_t sequence = 0;     // position among all passes of the program
   std::vector<Point3> points;   // the polyline, first point = where the feed motion starts
   std::vector<ArcPiece> arcs;   // the arcs among its moves
   double xy_length = 0;
@@ -30,6 +31,7 @@ struct CuttingPass {
 // One cutting level of one tool: the paths cut at that level, in order.
 struct Layer {
   std::vector<std::size_t> workingsteps;  // ascending, unique
+  std::size_t sequence = 0;                // of the first pass cutting at this layer
   setup::Tool tool;
   double z = 0;                            // the cutting level (lowest tool tip z)
   double z_top = 0;                        // highest z of its cutting moves (ramp entries)
@@ -44,6 +46,7 @@ struct Layer {
 
 struct DrillPass {
   std::size_t workingstep = 0;
+  std::size_t sequence = 0;
   setup::Tool tool;
   Point2 at;
   double z_bottom = 0, z_top = 0;

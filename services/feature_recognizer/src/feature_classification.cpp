@@ -181,7 +181,7 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
                                                 const std::vector<Layer>& layers, const PartEnvelope& part) {
   const auto& group = groups[group_index];
   ClassifiedFeature out;
-  out.order = group.first_workingstep;
+  out.order = group.sequence;
   auto& f = out.feature;
   f.bottom_z = group.floor;
   const bool is_profile = std::find(part.outside_profiles.begin(), part.outside_profiles.end(), group_index) !=

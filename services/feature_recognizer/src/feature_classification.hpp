@@ -31,7 +31,7 @@ PartEnvelope find_part_envelope(const std::vector<MillingGroup>& groups, const s
 struct ClassifiedFeature {
   RecognizedFeature feature;
   Region footprint;  // the feature's area inside the part, for its top level
-  std::size_t order = 0;  // its first workingstep
+  std::size_t order = 0;  // machining order: the sequence number of its first pass
 };
 
 // nullopt when the group cut only outside the part (air).

@@ -57,6 +57,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
     group.floor = layer.z;
     group.freeform = layer.freeform;
     group.first_workingstep = layer.workingsteps.front();
+    group.sequence = layer.sequence;
     groups.push_back(std::move(group));
     add(groups.size() - 1, true);
   }

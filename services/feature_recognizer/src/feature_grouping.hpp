@@ -19,6 +19,7 @@ struct MillingGroup {
   double floor = 0;   // lowest cutting level
   bool freeform = false;
   std::size_t first_workingstep = 0;
+  std::size_t sequence = 0;  // of its first pass: machining order among all features
   std::vector<std::size_t> layers() const;
 };
 

@@ -56,6 +56,7 @@ std::vector<HoleCandidate> recognize_holes(const std::vector<DrillPass>& passes)
     HoleCandidate hole;
     hole.at = c.at;
     hole.first_workingstep = c.passes.front()->workingstep;
+    hole.sequence = c.passes.front()->sequence;
     hole.z_bottom = c.passes.front()->z_bottom;
     for (const auto* p : c.passes) {
       hole.diameter = std::max(hole.diameter, p->tool.diameter);

@@ -15,6 +15,7 @@ struct HoleCandidate {
   double point_angle = 0;    // of the tool that went deepest, 0 = flat
   std::vector<RecognizedOperation> operations;
   std::size_t first_workingstep = 0;
+  std::size_t sequence = 0;  // of its first pass
 };
 
 // Two passes closer than this in XY (mm) are at the same hole.

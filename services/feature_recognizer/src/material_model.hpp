@@ -12,13 +12,13 @@ class MaterialModel {
  public:
   explicit MaterialModel(double stock_top) : stock_top_(stock_top) {}
 
-  // Records that the area `area` was cut down to `floor` by the workingstep `order`.
+  // Records that the area `area` was cut down to `floor` by the cut number `order`.
   void add_cut(const Region& area, double floor, std::size_t order);
 
-  // Height of the material at `p` before workingstep `order`.
+  // Height of the material at `p` before cut number `order`.
   double height_at(Point2 p, std::size_t order) const;
 
-  // The highest level that covers at least `share` of `area` before workingstep `order`,
+  // The highest level that covers at least `share` of `area` before cut number `order`,
   // considering only levels above `floor`; the stock top when nothing was cut there.
   double top_over(const Region& area, double floor, std::size_t order, double share = 0.05) const;
 

@@ -35,16 +35,20 @@ std::vector<std::vector<Point2>> level_runs(const Layer& layer) {
   return runs;
 }
 
+// A loop closes when the path comes back to a point it passed since the last loop closed,
+// at least `min_length` of path later.
 int count_closed_loops(const std::vector<Point2>& run, double min_length) {
   int loops = 0;
   std::size_t start = 0;
-  double since = 0;
+  std::vector<double> along(run.size(), 0);
   for (std::size_t i = 1; i < run.size(); ++i) {
-    since += std::hypot(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
-    if (since > min_length && std::hypot(run[i].x - run[start].x, run[i].y - run[start].y) < 1e-2) {
-      ++loops;
-      start = i;
-      since = 0;
+    along[i] = along[i - 1] + std::hypot(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
+    for (std::size_t j = start; j < i; ++j) {
+      if (along[i] - along[j] > min_length && std::hypot(run[i].x - run[j].x, run[i].y - run[j].y) < 1e-2) {
+        ++loops;
+        start = i;
+        break;
+      }
     }
   }
   return loops;
@@ -114,34 +118,39 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
   const bool parallel = dominant >= 0 && dominant_length > 0.6 * total;
 
   if (parallel) {
+    // Parallel passes sweep across the area: the offsets of successive passes move one way.
+    // Nested contours have long parallel sides too, but their offsets jump from side to side.
     const double ux = std::cos(dominant * std::numbers::pi / 180), uy = std::sin(dominant * std::numbers::pi / 180);
-    int forward = 0, backward = 0, parallel_moves = 0;
-    std::vector<double> offsets;
+    int forward = 0, backward = 0;
+    std::vector<double> sequence;
     for (const auto& s : straights) {
       const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
       const double along = (dx * ux + dy * uy) / s.length();
       if (std::abs(along) < std::cos(1.5 * std::numbers::pi / 180) || s.length() < tool_r) continue;
-      ++parallel_moves;
       (along > 0 ? forward : backward)++;
-      offsets.push_back(-s.a.x * uy + s.a.y * ux);
+      sequence.push_back(-s.a.x * uy + s.a.y * ux);
     }
-    std::sort(offsets.begin(), offsets.end());
+    int rising = 0, falling = 0;
     std::vector<double> gaps;
-    for (std::size_t i = 1; i < offsets.size(); ++i) {
-      if (offsets[i] - offsets[i - 1] > 0.05) gaps.push_back(offsets[i] - offsets[i - 1]);
+    for (std::size_t i = 1; i < sequence.size(); ++i) {
+      const double d = sequence[i] - sequence[i - 1];
+      if (std::abs(d) <= 0.05) continue;
+      (d > 0 ? rising : falling)++;
+      gaps.push_back(std::abs(d));
     }
-    if (!gaps.empty()) {
-      std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
-      out.stepover = gaps[gaps.size() / 2];
-    }
-    if (parallel_moves == 1 || (gaps.empty() && runs.size() == 1)) {
+    const int parallel_moves = forward + backward;
+    if (parallel_moves == 1 && out.closed_loops == 0) {
       out.strategy = Strategy::CenterMilling;  // one straight pass: a slot along its centre line
-    } else if (std::min(forward, backward) >= std::max(1, parallel_moves / 4)) {
-      out.strategy = Strategy::Bidirectional;
-    } else {
-      out.strategy = Strategy::Unidirectional;
+      return out;
     }
-    return out;
+    const bool sweeping = parallel_moves >= 3 && std::max(rising, falling) >= 0.75 * (rising + falling);
+    if (sweeping) {
+      std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
+      out.stepover = gaps.empty() ? 0 : gaps[gaps.size() / 2];
+      out.strategy = std::min(forward, backward) >= std::max(1, parallel_moves / 4) ? Strategy::Bidirectional
+                                                                                    : Strategy::Unidirectional;
+      return out;
+    }
   }
 
   // Many separate passes at one level, or mostly short curved moves: adaptive clearing.
@@ -154,14 +163,16 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
   } else if (out.closed_loops == 1) {
     out.strategy = Strategy::Contour;
   } else {
-    // An open path that neither closes nor runs parallel: a centre line when it sweeps no more
-    // than one tool width, else a spiral.
+    // An open path that neither closes nor runs parallel: a centre line when it sweeps one
+    // tool width along its whole length (it never overlaps itself), else a spiral.
     double length = 0;
     for (const auto& run : runs) {
       for (std::size_t i = 1; i < run.size(); ++i) length += std::hypot(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
     }
     const double one_width = length * 2 * tool_r + std::numbers::pi * tool_r * tool_r;
-    out.strategy = layer.area.area() <= 1.05 * one_width ? Strategy::CenterMilling : Strategy::ContourSpiral;
+    const double swept = layer.area.area();
+    const bool center_line = swept <= 1.05 * one_width && swept >= 0.9 * one_width;
+    out.strategy = center_line ? Strategy::CenterMilling : Strategy::ContourSpiral;
   }
   return out;
 }

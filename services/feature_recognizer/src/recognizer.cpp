@@ -88,7 +88,7 @@ std::vector<RecognizedFeature> recognize(const std::vector<ToolpathWorkingstep>&
       f.bottom_angle_deg = hole.point_angle;
     }
     f.operations = hole.operations;
-    c.order = hole.first_workingstep;
+    c.order = hole.sequence;
     Pending p{c.order, c, disk(hole.at, hole.diameter, options.chord_tolerance)};
     p.is_hole = true;
     p.hole_at = hole.at;
