@@ -53,16 +53,95 @@ std::string_view toolpath_type_name(sn::ToolpathType t) {
   return "TRAJECTORY_PATH";
 }
 
+// Where instances go: a Graph (stepnc_to_graph) or straight into the file text (write_stepnc,
+// which never holds the instance graph: a million-point toolpath stays cheap). Ids are
+// consecutive from 1 and references only point back, so both give the same numbering.
+class Emitter {
+ public:
+  virtual ~Emitter() = default;
+  virtual InstanceId add(std::string_view entity, std::vector<Value> attributes) = 0;
+  virtual InstanceId point(const sn::CartesianPoint& c) = 0;  // CARTESIAN_POINT('',(x,y,z))
+  // POLYLINE('',(#first..#last)) over consecutive ids
+  virtual InstanceId polyline(InstanceId first, InstanceId last) = 0;
+};
+
+class GraphEmitter final : public Emitter {
+ public:
+  explicit GraphEmitter(Graph& g) : g_(g) {}
+  InstanceId add(std::string_view entity, std::vector<Value> attributes) override { return g_.add(entity, std::move(attributes)); }
+  InstanceId point(const sn::CartesianPoint& c) override {
+    return g_.add("CARTESIAN_POINT", {string(""), list({real(c.x), real(c.y), real(c.z)})});
+  }
+  InstanceId polyline(InstanceId first, InstanceId last) override {
+    std::vector<InstanceId> ids;
+    for (InstanceId i = first; i <= last; ++i) ids.push_back(i);
+    return g_.add("POLYLINE", {string(""), list_of_refs(ids)});
+  }
+
+ private:
+  Graph& g_;
+};
+
+class TextEmitter final : public Emitter {
+ public:
+  explicit TextEmitter(std::string& out) : out_(out) {}
+  InstanceId add(std::string_view entity, std::vector<Value> attributes) override {
+    start(entity);
+    for (std::size_t i = 0; i < attributes.size(); ++i) {
+      if (i) out_ += ',';
+      out_ += format_value(attributes[i]);
+    }
+    return finish();
+  }
+  InstanceId point(const sn::CartesianPoint& c) override {
+    start("CARTESIAN_POINT");
+    out_ += "'',(";
+    out_ += format_real(c.x);
+    out_ += ',';
+    out_ += format_real(c.y);
+    out_ += ',';
+    out_ += format_real(c.z);
+    out_ += ')';
+    return finish();
+  }
+  InstanceId polyline(InstanceId first, InstanceId last) override {
+    start("POLYLINE");
+    out_ += "'',(";
+    std::size_t line_start = out_.size();
+    for (InstanceId i = first; i <= last; ++i) {
+      if (i != first) out_ += ',';
+      if (out_.size() - line_start > 90) {  // keep lines readable: wrap long reference lists
+        out_ += "\n  ";
+        line_start = out_.size();
+      }
+      out_ += '#';
+      out_ += std::to_string(i);
+    }
+    out_ += ')';
+    return finish();
+  }
+
+ private:
+  void start(std::string_view entity) {
+    out_ += '#';
+    out_ += std::to_string(next_);
+    out_ += '=';
+    out_ += entity;
+    out_ += '(';
+  }
+  InstanceId finish() {
+    out_ += ");\n";
+    return next_++;
+  }
+  std::string& out_;
+  InstanceId next_ = 1;
+};
+
 class Cc1Writer {
  public:
-  explicit Cc1Writer(const sn::Project& p) : p_(p) {}
+  Cc1Writer(const sn::Project& p, Emitter& out) : p_(p), g_(out) {}
 
-  Graph build(const StepncWriteOptions& options) {
-    g_.header.description = options.description;
-    g_.header.name = options.file_name;
-    g_.header.schema = {"MACHINING_SCHEMA", "MILLING_SCHEMA"};
-    if (options.unix_time) g_.header.time_stamp = time_stamp_of(*options.unix_time);
-
+  void build() {
     // Which operations each feature carries (its_operations), in workplan order.
     feature_operations_.resize(p_.features.size());
     for (const auto& e : p_.main_workplan.its_elements) {
@@ -70,47 +149,56 @@ class Cc1Writer {
         feature_operations_.at(ws->its_feature.index).push_back(ws->its_operation);
       }
     }
-
-    const InstanceId project = g_.reserve();
-    const InstanceId workplan = g_.reserve();
-    workpiece_ = g_.reserve();
-    const std::optional<InstanceId> rawpiece = p_.rawpiece ? std::optional(g_.reserve()) : std::nullopt;
-    const InstanceId setup = g_.reserve();
+    // Bottom-up: everything an instance refers to is written before it; PROJECT comes last.
+    const std::optional<InstanceId> rawpiece =
+        p_.rawpiece ? std::optional(write_workpiece(*p_.rawpiece, std::nullopt)) : std::nullopt;
+    workpiece_ = write_workpiece(p_.workpiece, rawpiece);
+    const InstanceId setup = write_setup();
     std::vector<InstanceId> executables;
-    for (std::size_t i = 0; i < p_.main_workplan.its_elements.size(); ++i) executables.push_back(g_.reserve());
-
-    g_.set(project, "PROJECT", {string(p_.its_id), ref(workplan), list_of_refs({workpiece_}), unset(), unset(), unset()});
-    g_.set(workplan, "WORKPLAN", {string(p_.main_workplan.its_id), list_of_refs(executables), unset(), ref(setup), unset()});
-    write_workpiece(workpiece_, p_.workpiece, rawpiece);
-    if (rawpiece) write_workpiece(*rawpiece, *p_.rawpiece, std::nullopt);
-    write_setup(setup);
-    for (std::size_t i = 0; i < executables.size(); ++i) {
-      std::visit([&](const auto& e) { write_executable(executables[i], e); }, p_.main_workplan.its_elements[i]);
+    executables.reserve(p_.main_workplan.its_elements.size());
+    for (const auto& e : p_.main_workplan.its_elements) {
+      executables.push_back(std::visit([&](const auto& x) { return write_executable(x); }, e));
     }
-    return std::move(g_);
+    const InstanceId workplan = g_.add("WORKPLAN", {string(p_.main_workplan.its_id), list_of_refs(executables), unset(), ref(setup), unset()});
+    g_.add("PROJECT", {string(p_.its_id), ref(workplan), list_of_refs({workpiece_}), unset(), unset(), unset()});
   }
 
  private:
   // ---- geometry
-  InstanceId point(const sn::CartesianPoint& c, std::string name = "") {
-    return g_.add("CARTESIAN_POINT", {string(std::move(name)), list({real(c.x), real(c.y), real(c.z)})});
-  }
+  InstanceId point(const sn::CartesianPoint& c) { return g_.point(c); }
+  // The six axis directions are written once and shared; others (arc references) each once.
   InstanceId direction(const sn::Direction& d) {
-    auto key = std::make_tuple(d.x, d.y, d.z);
-    if (auto it = directions_.find(key); it != directions_.end()) return it->second;
+    int slot = -1;
+    const double c[3] = {d.x, d.y, d.z};
+    for (int k = 0; k < 3; ++k) {
+      if ((c[k] == 1 || c[k] == -1) && c[(k + 1) % 3] == 0 && c[(k + 2) % 3] == 0) slot = 2 * k + (c[k] < 0 ? 1 : 0);
+    }
+    if (slot >= 0 && axis_directions_[slot] != 0) return axis_directions_[slot];
     const InstanceId id = g_.add("DIRECTION", {string(""), list({real(d.x), real(d.y), real(d.z)})});
-    directions_.emplace(key, id);
+    if (slot >= 0) axis_directions_[slot] = id;
     return id;
   }
+  // Placements and planes are shared between instances with the same name and value.
+  using PlacementKey = std::tuple<std::string, double, double, double, double, double, double, double, double, double>;
+  static PlacementKey key_of(const std::string& name, const sn::Axis2Placement3d& a) {
+    return {name, a.location.x, a.location.y, a.location.z, a.axis.x, a.axis.y, a.axis.z,
+            a.ref_direction.x, a.ref_direction.y, a.ref_direction.z};
+  }
   InstanceId placement(const sn::Axis2Placement3d& a, std::string name = "") {
+    auto key = key_of(name, a);
+    if (auto it = placements_.find(key); it != placements_.end()) return it->second;
+    const InstanceId id = new_placement(a, std::move(name));
+    placements_.emplace(std::move(key), id);
+    return id;
+  }
+  InstanceId new_placement(const sn::Axis2Placement3d& a, std::string name) {
     const InstanceId location = point(a.location);
-    return g_.add("AXIS2_PLACEMENT_3D",
-                  {string(std::move(name)), ref(location), ref(direction(a.axis)), ref(direction(a.ref_direction))});
+    const InstanceId axis = direction(a.axis);
+    const InstanceId ref_direction = direction(a.ref_direction);
+    return g_.add("AXIS2_PLACEMENT_3D", {string(std::move(name)), ref(location), ref(axis), ref(ref_direction)});
   }
   InstanceId plane(const sn::Plane& pl, const std::string& name) {
-    auto key = std::make_tuple(name, pl.position.location.x, pl.position.location.y, pl.position.location.z,
-                               pl.position.axis.x, pl.position.axis.y, pl.position.axis.z,
-                               pl.position.ref_direction.x, pl.position.ref_direction.y, pl.position.ref_direction.z);
+    auto key = key_of(name, pl.position);
     if (auto it = planes_.find(key); it != planes_.end()) return it->second;
     const InstanceId position = placement(pl.position, name);
     const InstanceId id = g_.add("PLANE", {string(name), ref(position)});
@@ -119,13 +207,13 @@ class Cc1Writer {
   }
 
   InstanceId polyline(const sn::Polyline& l) {
-    std::vector<InstanceId> pts;
-    pts.reserve(l.points.size());
-    for (const auto& c : l.points) pts.push_back(point(c));
-    return g_.add("POLYLINE", {string(""), list_of_refs(pts)});
+    const InstanceId first = point(l.points.at(0));
+    InstanceId last = first;
+    for (std::size_t i = 1; i < l.points.size(); ++i) last = point(l.points[i]);
+    return g_.polyline(first, last);
   }
   InstanceId trimmed_circle(const sn::TrimmedCircle& t) {
-    const InstanceId position = placement(t.position);
+    const InstanceId position = new_placement(t.position, "");
     const InstanceId circle = g_.add("CIRCLE", {string(""), ref(position), real(t.radius)});
     const InstanceId p1 = point(t.trim_1_point);
     const InstanceId p2 = point(t.trim_2_point);
@@ -304,19 +392,17 @@ class Cc1Writer {
 
   InstanceId feature(sn::FeatureRef r) {
     if (auto it = features_.find(r.index); it != features_.end()) return it->second;
-    // Reserve first: the feature lists the operations that refer back to it.
-    const InstanceId id = g_.reserve();
-    features_.emplace(r.index, id);
+    InstanceId id = 0;
     const sn::Feature& f = p_.feature(r);
     std::vector<InstanceId> ops;
     for (const auto& o : feature_operations_.at(r.index)) ops.push_back(operation(o));
     auto common = [&](const sn::MachiningFeature& m) {
-      const InstanceId placement_id = placement(m.feature_placement, m.its_id);
-      const InstanceId depth_id = plane(m.depth, m.its_id + " DEPTH PLANE");
+      const InstanceId placement_id = placement(m.feature_placement, "FEATURE PLACEMENT");
+      const InstanceId depth_id = plane(m.depth, "DEPTH PLANE");
       return std::vector<Value>{string(m.its_id), ref(workpiece_), list_of_refs(ops), ref(placement_id), ref(depth_id)};
     };
     std::visit(Overload{
-        [&](const sn::ToolpathFeature& t) { g_.set(id, "TOOLPATH_FEATURE", common(t)); },
+        [&](const sn::ToolpathFeature& t) { id = g_.add("TOOLPATH_FEATURE", common(t)); },
         [&](const sn::RoundHole& h) {
           auto a = common(h);
           a.push_back(ref(toleranced(h.diameter)));
@@ -326,15 +412,16 @@ class Cc1Writer {
               [&](const sn::FlatHoleBottom&) { return g_.add("FLAT_HOLE_BOTTOM", {}); },
               [&](const sn::ConicalHoleBottom& c) { return g_.add("CONICAL_HOLE_BOTTOM", {real(c.tip_angle), unset()}); }},
               h.bottom_condition)));
-          g_.set(id, "ROUND_HOLE", std::move(a));
+          id = g_.add("ROUND_HOLE", std::move(a));
         },
         [&](const auto& other) {
           // CC2 features are written by the feature_recognizer's mapping (issue 4); a CC1 file
           // carries them as toolpath features so the file stays valid.
           auto a = common_of(other, common);
-          g_.set(id, "TOOLPATH_FEATURE", std::move(a));
+          id = g_.add("TOOLPATH_FEATURE", std::move(a));
         }},
         f);
+    features_.emplace(r.index, id);
     return id;
   }
   template <class F, class Common>
@@ -350,18 +437,19 @@ class Cc1Writer {
   }
 
   // ---- workplan
-  void write_executable(InstanceId id, const sn::MachiningWorkingstep& ws) {
+  InstanceId write_executable(const sn::MachiningWorkingstep& ws) {
     const InstanceId secplane = plane(ws.its_secplane, "SECURITY PLANE");
     const InstanceId feature_id = feature(ws.its_feature);
-    g_.set(id, "MACHINING_WORKINGSTEP", {string(ws.its_id), ref(secplane), ref(feature_id), ref(operation(ws.its_operation)), unset()});
+    const InstanceId operation_id = operation(ws.its_operation);
+    return g_.add("MACHINING_WORKINGSTEP", {string(ws.its_id), ref(secplane), ref(feature_id), ref(operation_id), unset()});
   }
-  void write_executable(InstanceId id, const sn::RapidMovement& r) {
+  InstanceId write_executable(const sn::RapidMovement& r) {
     const InstanceId secplane = plane(r.its_secplane, "SECURITY PLANE");
     const Value toolpath = r.its_toolpath ? ref(toolpath_list(*r.its_toolpath)) : unset();
-    g_.set(id, "RAPID_MOVEMENT", {string(r.its_id), ref(secplane), toolpath, unset()});
+    return g_.add("RAPID_MOVEMENT", {string(r.its_id), ref(secplane), toolpath, unset()});
   }
 
-  void write_workpiece(InstanceId id, const sn::Workpiece& w, std::optional<InstanceId> rawpiece) {
+  InstanceId write_workpiece(const sn::Workpiece& w, std::optional<InstanceId> rawpiece) {
     Value bounding = unset();
     if (w.its_bounding_geometry) {
       const auto& b = *w.its_bounding_geometry;
@@ -369,39 +457,62 @@ class Cc1Writer {
       bounding = ref(g_.add("BLOCK", {string(w.its_id), ref(position), real(b.x), real(b.y), real(b.z)}));
     }
     std::vector<InstanceId> clamps;
-    for (const auto& c : w.clamping_positions) clamps.push_back(point(c, "CLAMPING POSITION"));
-    g_.set(id, "WORKPIECE", {string(w.its_id), unset(), opt_real(w.global_tolerance), opt_ref(rawpiece), unset(),
+    for (const auto& c : w.clamping_positions) clamps.push_back(point(c));
+    return g_.add("WORKPIECE", {string(w.its_id), unset(), opt_real(w.global_tolerance), opt_ref(rawpiece), unset(),
                              bounding, list_of_refs(clamps)});
   }
 
-  void write_setup(InstanceId id) {
+  InstanceId write_setup() {
     const sn::Setup& s = p_.setup;
     const Value origin = s.its_origin ? ref(placement(*s.its_origin, s.its_id)) : unset();
     const InstanceId secplane = plane(s.its_secplane, "SECURITY PLANE");
     const InstanceId wp_origin = placement(s.its_workpiece_setup.its_origin, p_.workpiece.its_id);
     const InstanceId wp_setup = g_.add("WORKPIECE_SETUP", {ref(workpiece_), ref(wp_origin), unset(), unset(), list({})});
-    g_.set(id, "SETUP", {string(s.its_id), origin, ref(secplane), list_of_refs({wp_setup})});
+    return g_.add("SETUP", {string(s.its_id), origin, ref(secplane), list_of_refs({wp_setup})});
   }
 
   const sn::Project& p_;
-  Graph g_;
+  Emitter& g_;
   InstanceId workpiece_ = 0;
   std::vector<std::vector<sn::OperationRef>> feature_operations_;
-  std::map<std::tuple<double, double, double>, InstanceId> directions_;
-  std::map<std::tuple<std::string, double, double, double, double, double, double, double, double, double>, InstanceId> planes_;
+  InstanceId axis_directions_[6] = {0, 0, 0, 0, 0, 0};
+  std::map<PlacementKey, InstanceId> planes_, placements_;
   std::map<std::uint32_t, InstanceId> tools_, technologies_, functions_, operations_, features_;
 };
 
 }  // namespace
 
+namespace {
+Header header_of(const StepncWriteOptions& options) {
+  Header h;
+  h.description = options.description;
+  h.name = options.file_name;
+  h.schema = {"MACHINING_SCHEMA", "MILLING_SCHEMA"};
+  if (options.unix_time) h.time_stamp = time_stamp_of(*options.unix_time);
+  return h;
+}
+}  // namespace
+
 part21::Graph stepnc_to_graph(const stepnc::Project& project, const StepncWriteOptions& options) {
-  return Cc1Writer(project).build(options);
+  Graph g;
+  g.header = header_of(options);
+  GraphEmitter emitter(g);
+  Cc1Writer(project, emitter).build();
+  return g;
 }
 
 std::string write_stepnc(const stepnc::Project& project, const StepncWriteOptions& options) {
-  part21::WriteOptions w;
-  w.unix_time = options.unix_time;
-  return part21::write_part21(stepnc_to_graph(project, options), w);
+  // The header as the generic writer writes it (an empty DATA section follows it there).
+  Graph header_only;
+  header_only.header = header_of(options);
+  std::string out = write_part21(header_only);
+  const std::size_t data = out.rfind("DATA;\n");
+  if (data == std::string::npos) throw std::logic_error("write_stepnc: unexpected Part 21 writer output");
+  out.resize(data + 6);
+  TextEmitter emitter(out);
+  Cc1Writer(project, emitter).build();
+  out += "ENDSEC;\nEND-ISO-10303-21;\n";
+  return out;
 }
 
 }  // namespace ncbridge::step_writer
