@@ -38,16 +38,22 @@ void append_arc(const Point3& from, const Move& move, double tolerance, CuttingP
   pass.xy_length += std::abs(sweep) * (r0 + r1) / 2;
 }
 
+// A pass ends at a rapid or a tool change; it runs on across workingsteps otherwise (an
+// upstream segmenter may split a plunge from the cut it starts, at a feed change).
 std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>& workingsteps, double tolerance) {
   std::vector<CuttingPass> passes;
+  CuttingPass current;
+  auto flush = [&] {
+    if (current.points.size() >= 2) passes.push_back(std::move(current));
+    current = CuttingPass{};
+  };
+  Point3 at;
   for (std::size_t w = 0; w < workingsteps.size(); ++w) {
     const auto& ws = workingsteps[w];
-    Point3 at = ws.start;
-    CuttingPass current;
-    auto flush = [&] {
-      if (current.points.size() >= 2) passes.push_back(std::move(current));
-      current = CuttingPass{};
-    };
+    const bool continues = w > 0 && workingsteps[w - 1].tool.number == ws.tool.number && ws.start == at &&
+                           !ws.cycle && !workingsteps[w - 1].cycle;
+    if (!continues) flush();
+    at = ws.start;
     for (const auto& move : ws.moves) {
       if (!finite(move.end) || !std::isfinite(move.center_x) || !std::isfinite(move.center_y)) {
         throw InputError({"", move.source_line, 0}, "workingstep " + std::to_string(w) +
@@ -61,6 +67,7 @@ std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>&
       if (current.points.empty()) {
         current.workingstep = w;
         current.points.push_back(at);
+        current.point_workingsteps.push_back(w);
       }
       if (move.kind == MoveKind::Arc) {
         append_arc(at, move, tolerance, current);
@@ -68,10 +75,11 @@ std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>&
         current.xy_length += std::hypot(move.end.x - at.x, move.end.y - at.y);
         current.points.push_back(move.end);
       }
+      current.point_workingsteps.resize(current.points.size(), w);
       at = move.end;
     }
-    flush();
   }
+  flush();
   for (std::size_t i = 0; i < passes.size(); ++i) passes[i].sequence = i;
   for (auto& pass : passes) {
     pass.z_min = pass.z_max = pass.points.front().z;
@@ -102,9 +110,15 @@ bool is_freeform(const CuttingPass& pass) {
   return total > 0 && sloped > 0.5 * total && reversals >= 4;
 }
 
-Layer make_layer(const CuttingPass& pass, const ToolpathWorkingstep& ws, std::vector<Point3> path) {
+Layer make_layer(const CuttingPass& pass, const ToolpathWorkingstep& ws, std::vector<Point3> path,
+                 std::size_t first_point) {
   Layer layer;
-  layer.workingsteps = {pass.workingstep};
+  // The workingsteps of the points after the first (the first is where the cut starts from).
+  for (std::size_t i = first_point + 1; i < first_point + path.size() && i < pass.points.size(); ++i) {
+    const auto w = pass.point_workingsteps[i];
+    if (layer.workingsteps.empty() || layer.workingsteps.back() != w) layer.workingsteps.push_back(w);
+  }
+  if (layer.workingsteps.empty()) layer.workingsteps = {pass.workingstep};
   layer.sequence = pass.sequence;
   layer.tool = ws.tool;
   layer.feed = ws.feed;
@@ -124,13 +138,14 @@ Layer make_layer(const CuttingPass& pass, const ToolpathWorkingstep& ws, std::ve
 std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep& ws) {
   std::vector<Layer> out;
   if (is_freeform(pass)) {
-    Layer layer = make_layer(pass, ws, pass.points);
+    Layer layer = make_layer(pass, ws, pass.points, 0);
     layer.freeform = true;
     layer.arcs = pass.arcs;
     out.push_back(std::move(layer));
     return out;
   }
   std::vector<Point3> piece{pass.points.front()};
+  std::size_t piece_first = 0;
   bool piece_has_level = false;
   double piece_level = 0;
   for (std::size_t i = 1; i < pass.points.size(); ++i) {
@@ -140,15 +155,17 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
     if (horizontal) {
       if (piece_has_level && std::abs(a.z - piece_level) > kLevelTolerance) {
         // A new level begins: close the current piece at its last point on the old level.
-        out.push_back(make_layer(pass, ws, piece));
+        out.push_back(make_layer(pass, ws, piece, piece_first));
         piece = {a};
+        piece_first = i - 1;
       }
       piece_has_level = true;
       piece_level = a.z;
     } else if (piece_has_level && b.z < piece_level - kLevelTolerance) {
       // Descending below the current level: this starts the next level's entry.
-      out.push_back(make_layer(pass, ws, piece));
+      out.push_back(make_layer(pass, ws, piece, piece_first));
       piece = {a};
+      piece_first = i - 1;
       piece_has_level = false;
     }
     piece.push_back(b);
@@ -157,9 +174,14 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
     if (!piece_has_level && !out.empty() && piece.back().z >= out.back().z - kLevelTolerance) {
       auto& last = out.back().paths.back();
       last.insert(last.end(), piece.begin() + 1, piece.end());
+      for (std::size_t i = piece_first + 1; i < pass.points.size(); ++i) {
+        if (out.back().workingsteps.back() < pass.point_workingsteps[i]) {
+          out.back().workingsteps.push_back(pass.point_workingsteps[i]);
+        }
+      }
       out.back().z_top = std::max(out.back().z_top, piece.back().z);
     } else {
-      out.push_back(make_layer(pass, ws, piece));
+      out.push_back(make_layer(pass, ws, piece, piece_first));
     }
   }
   for (auto& layer : out) {
@@ -254,7 +276,9 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
             std::abs(prev.z - layer.z) < kLevelTolerance && boxes_touch(prev.extent, layer.extent)) {
           for (auto& p : layer.paths) prev.paths.push_back(std::move(p));
           prev.arcs.insert(prev.arcs.end(), layer.arcs.begin(), layer.arcs.end());
-          if (prev.workingsteps.back() != layer.workingsteps.front()) prev.workingsteps.push_back(layer.workingsteps.front());
+          for (auto w : layer.workingsteps) {
+            if (prev.workingsteps.back() < w) prev.workingsteps.push_back(w);
+          }
           prev.z_top = std::max(prev.z_top, layer.z_top);
           prev.extent = path_box(prev.paths, r);
           continue;

@@ -19,7 +19,8 @@ struct ArcPiece {
 
 // Feed moves of one workingstep between two rapids, arcs as chords within the tolerance.
 struct CuttingPass {
-  std::size_t workingstep = 0;
+  std::size_t workingstep = 0;  // the first; a pass runs on across workingsteps with no rapid between
+  std::vector<std::size_t> point_workingsteps;  // parallel to points: the workingstep of each
   std::size_t sequence = 0;     // position among all passes of the program
   std::vector<Point3> points;   // the polyline, first point = where the feed motion starts
   std::vector<ArcPiece> arcs;   // the arcs among its moves
