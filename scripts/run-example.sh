@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# Quick start, command 1: install what is missing, build, convert the example program.
+# Quick start, command 1: install what is missing, build, convert the example program to STEP-NC.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh release
 mkdir -p out
+ex=examples/plate
 set -x
-build/bin/ncbridge canon examples/face_mill/face_mill.ngc --tools examples/face_mill/tools.json
+build/bin/ncbridge convert "$ex/plate.ngc" --tools "$ex/tools.json" --stock "$ex/stock.json" \
+  --level cc1 -o out/plate_cc1.stp --report out/plate_cc1.json
+build/bin/ncbridge check out/plate_cc1.stp
