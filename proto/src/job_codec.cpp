@@ -33,6 +33,7 @@ std::string encode_job(const Job& job) {
   }
   for (const std::string& p : job.subroutine_path) m.mutable_setup()->add_subroutine_path(p);
   m.set_level(static_cast<pb::ConformanceClass>(job.level));
+  m.set_output_name(job.output_name);
   return m.SerializeAsString();
 }
 
@@ -68,6 +69,7 @@ Job decode_job(std::string_view bytes) {
   }
   for (const auto& p : m.setup().subroutine_path()) job.subroutine_path.push_back(p);
   job.level = enum_in_range<ConformanceClass>(m.level(), 2, what, "level");
+  job.output_name = m.output_name();
   return job;
 }
 

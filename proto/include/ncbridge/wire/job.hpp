@@ -24,6 +24,7 @@ struct Job {
   std::optional<setup::Stock> stock;
   std::vector<std::string> subroutine_path;
   ConformanceClass level = ConformanceClass::Cc1;
+  std::string output_name;   // FILE_NAME.name of the Part 21 file; empty: the step_writer derives one
 };
 
 std::string encode_job(const Job& job);

@@ -1,0 +1,54 @@
+#include "ncbridge/service/service_options.hpp"
+
+#include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <cstdlib>
+#include <exception>
+
+#include "ncbridge/bus/participant.hpp"
+#include "ncbridge/service/shutdown_signal.hpp"
+
+namespace ncbridge::service {
+
+void add_service_options(CLI::App& app, ServiceOptions& options) {
+  app.add_option("--domain", options.bus.domain_id, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")
+      ->check(CLI::Range(0, 230));
+  app.add_option("--cyclonedds-uri", options.bus.cyclonedds_uri,
+                 "Cyclone DDS configuration, file:///... (default: CYCLONEDDS_URI)");
+  app.add_option("--worker-id", options.runner.worker_id, "Worker id on the workers topic (default: host/pid)");
+  app.add_option("--log-level", options.log_level, "trace, debug, info, warn, error")
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}));
+}
+
+int run_service(int argc, char** argv, CLI::App& app, ServiceOptions& options,
+                const std::function<StageSpec()>& make_spec) {
+  try {
+    options.bus = bus::config_from_environment();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    ShutdownSignal shutdown;  // before DDS starts its threads, so they inherit the blocked mask
+    StageSpec spec = make_spec();
+    auto logger = spdlog::stderr_color_st(spec.stage);
+    logger->set_pattern("%Y-%m-%dT%H:%M:%S.%e %n[%P] %l: %v");
+    logger->set_level(spdlog::level::from_str(options.log_level));
+    spdlog::set_default_logger(logger);
+    bus::Participant participant(options.bus);
+    StageRunner runner(participant, std::move(spec), options.runner);
+    return runner.run(shutdown);
+  } catch (const std::exception& e) {
+    spdlog::critical("{}", e.what());
+    return 1;
+  }
+}
+
+}  // namespace ncbridge::service

@@ -1,0 +1,144 @@
+// ncbridge-interpreter: the interpreter stage as a DDS service. Jobs come from the programs
+// topic (a whole program) and from the blocks topic (a controller's run, live capture: the run's
+// blocks in order, interpreted when its RUN_END arrives). Each job's canonical stream goes to
+// the canonical topic: the job context first, then batches (ncbridge/service/canonical_stream.hpp).
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <optional>
+#include <string>
+
+#include "ncbridge/bus/canonical_batcher.hpp"
+#include "ncbridge/bus/topics.hpp"
+#include "ncbridge/common/error.hpp"
+#include "ncbridge/interpreter/interpreter.hpp"
+#include "ncbridge/service/canonical_stream.hpp"
+#include "ncbridge/service/service_options.hpp"
+#include "ncbridge/setup/stock.hpp"
+#include "ncbridge/setup/tool_list.hpp"
+#include "ncbridge/wire/block.hpp"
+#include "ncbridge/wire/job.hpp"
+
+namespace {
+
+using namespace ncbridge;
+
+// What live-capture runs are converted with: the machine's tools and stock (a controller's
+// blocks carry neither).
+struct LiveSetup {
+  std::string tools;
+  std::string stock;
+  std::string dialect = "rs274ngc";
+  std::string level = "cc1";
+};
+
+wire::Dialect dialect_of(const std::string& name) {
+  if (name == "fanuc") return wire::Dialect::Fanuc;
+  if (name == "mach3") return wire::Dialect::Mach3;
+  if (name == "siemens840d") return wire::Dialect::Siemens840D;
+  if (name == "heidenhain") return wire::Dialect::Heidenhain;
+  if (name == "auto") return wire::Dialect::Auto;
+  return wire::Dialect::Rs274Ngc;
+}
+
+wire::Job job_from_program(const service::JobInput& input) {
+  // A resubmission of the same job id replaces the program: the latest sample counts.
+  wire::Job job = wire::decode_job(input.payloads.back());
+  if (job.job_id != input.job_id)
+    throw InputError({"<job>", 0, 0}, "the payload is not a job for \"" + input.job_id + "\" (it names \"" +
+                                          job.job_id + "\")");
+  return job;
+}
+
+// A run of executed blocks becomes a program: the blocks in seq order, one per line, so source
+// lines are block numbers of the run (1 = the first executed block).
+wire::Job job_from_run(const service::JobInput& input, const wire::Job& live) {
+  wire::Job job = live;
+  job.job_id = input.job_id;
+  std::string name = input.job_id;
+  for (char& c : name) {
+    if (c == '/') c = '-';
+  }
+  job.output_name = name + ".stp";
+  job.file_name = input.job_id;
+  for (const std::string& payload : input.payloads) {
+    const wire::ExecutedBlock block = wire::decode_block(payload);
+    if (block.kind == wire::BlockKind::RunStart && !block.text.empty()) job.file_name = block.text;
+    if (block.kind != wire::BlockKind::Block) continue;
+    job.program_text += block.text;
+    job.program_text += '\n';
+  }
+  return job;
+}
+
+// Forwards the stream, reporting progress as the share of the program's lines interpreted.
+class ProgressSink final : public canonical::Sink {
+ public:
+  ProgressSink(canonical::Sink& next, service::JobContext& context, std::string_view text)
+      : next_(next), context_(context), lines_(1.0 + static_cast<double>(std::count(text.begin(), text.end(), '\n'))) {}
+  void source_file(std::uint32_t index, std::string_view path) override { next_.source_file(index, path); }
+  void call(const canonical::Call& c) override {
+    next_.call(c);
+    if ((++calls_ & 0x3FF) == 0) context_.progress(static_cast<double>(c.source.line) / lines_);
+  }
+  void end() override { next_.end(); }
+
+ private:
+  canonical::Sink& next_;
+  service::JobContext& context_;
+  double lines_;
+  std::uint64_t calls_ = 0;
+};
+
+void interpret(const wire::Job& job, service::JobContext& context) {
+  interpreter::Options options;
+  options.dialect = static_cast<interpreter::Dialect>(job.dialect);
+  options.tools = setup::ToolList(job.tools);
+  for (const std::string& dir : job.subroutine_path) options.subroutine_path.emplace_back(dir);
+
+  wire::Job header = job;
+  header.program_text.clear();
+  bus::Writer& out = context.output();
+  out.write(job.job_id, "", 0, service::kJobContext, false, wire::encode_job(header));
+
+  bus::CanonicalBatcher batcher(job.job_id, 1024, [&out](const bus::Envelope& batch) {
+    bus::Envelope e = batch;
+    e.seq += 1;  // after the context
+    e.kind = service::kCanonicalBatch;
+    out.write(e);
+  });
+  ProgressSink sink(batcher, context, job.program_text);
+  interpreter::interpret_text(job.program_text, job.file_name, options, sink);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"ncbridge-interpreter: part programs and controller runs -> canonical calls (DDS service)",
+               "ncbridge-interpreter"};
+  service::ServiceOptions options;
+  service::add_service_options(app, options);
+  LiveSetup live;
+  app.add_option("--live-tools", live.tools, "Tool list for live-capture runs (JSON/YAML)")->check(CLI::ExistingFile);
+  app.add_option("--live-stock", live.stock, "Stock for live-capture runs (JSON/YAML)")->check(CLI::ExistingFile);
+  app.add_option("--live-dialect", live.dialect, "Dialect of live-capture runs")
+      ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));
+  app.add_option("--live-level", live.level, "Conformance class asked for live-capture runs")
+      ->check(CLI::IsMember({"cc1", "cc2"}));
+
+  return service::run_service(argc, argv, app, options, [&] {
+    wire::Job live_job;
+    live_job.dialect = dialect_of(live.dialect);
+    if (!live.tools.empty()) live_job.tools = setup::read_tool_list(live.tools).tools();
+    if (!live.stock.empty()) live_job.stock = setup::read_stock(live.stock);
+    live_job.level = live.level == "cc2" ? wire::ConformanceClass::Cc2 : wire::ConformanceClass::Cc1;
+    service::StageSpec spec;
+    spec.stage = std::string(bus::kStageInterpreter);
+    spec.inputs = {{bus::Topic::Programs, false}, {bus::Topic::Blocks, true}};
+    spec.output = bus::Topic::Canonical;
+    spec.run = [live_job](const service::JobInput& input, service::JobContext& context) {
+      interpret(input.topic == bus::Topic::Blocks ? job_from_run(input, live_job) : job_from_program(input), context);
+    };
+    return spec;
+  });
+}
