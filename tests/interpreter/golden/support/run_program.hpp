@@ -15,6 +15,7 @@ struct ProgramRun {
 struct RunOptions {
   std::filesystem::path working_directory;  // empty: the caller's
   std::vector<std::string> extra_environment;  // "NAME=value" entries added to the caller's
+  bool discard_output = false;  // standard output to /dev/null (ProgramRun::out stays empty)
 };
 
 // argv[0] is the executable path. Standard input is /dev/null. Throws std::runtime_error when the
