@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/interpreter/canon_printer.hpp"
+#include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/setup/tool_list.hpp"
 
@@ -22,6 +23,8 @@ struct CanonArguments {
   std::string tool_table_units = "mm";
   std::string tools;
   std::string subroutine_path;
+  std::string dialect = "rs274ngc";
+  std::string heidenhain_feed_units = "mm/min";
 };
 
 std::vector<std::filesystem::path> split_path(const std::string& text) {
@@ -48,6 +51,19 @@ int run_canon(const CanonArguments& args) {
     return 1;
   }
   options.subroutine_path = split_path(args.subroutine_path);
+  interpreter::parse_dialect_name(args.dialect, options.dialect);
+  if (options.dialect == interpreter::Dialect::Auto) {
+    try {
+      const auto detected = interpreter::detect_dialect_file(args.program);
+      options.dialect = detected.dialect;
+      std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
+                   std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
+    } catch (const InputError& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      return 1;
+    }
+  }
+  if (args.heidenhain_feed_units == "mm/s") options.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
   interpreter::CanonPrinter printer(stdout);
   int status = 0;
   try {
@@ -74,6 +90,11 @@ void add_canon_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"mm", "inch"}));
   cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML)")->check(CLI::ExistingFile);
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
+  cmd->add_option("--dialect", args->dialect, "Program dialect (auto: detect it and say which)")
+      ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));
+  cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units,
+                  "Unit of Heidenhain F words (mm/s for FreeCAD's Heidenhain post; never guessed)")
+      ->check(CLI::IsMember({"mm/min", "mm/s"}));
   cmd->callback([args, &exit_code]() { exit_code = run_canon(*args); });
 }
 

@@ -22,6 +22,10 @@ struct Options {
   // LinuxCNC reports a program that ends without M2/M30 or a closing `%` as an error, after
   // running it. Off: the end of the file ends the program quietly.
   bool require_program_end = true;
+  // Heidenhain conversational F words: mm/min (the control's unit) unless the user says the
+  // program was posted in mm/s (FreeCAD's Heidenhain post). Never guessed from the values.
+  enum class FeedUnits { PerMinute, PerSecond };
+  FeedUnits heidenhain_feed_units = FeedUnits::PerMinute;
 };
 
 // Interprets the program in `program`, streaming calls into `sink` (source_file, call..., end).

@@ -1,0 +1,1017 @@
+// Fanuc / Mach3 front-end: reads each block (word-address syntax and custom macro B), runs the
+// macro statements and subprogram calls itself, and lowers every other block through the
+// dialect table onto neutral RS274 blocks for the executor (lowering/dialect_machine.hpp).
+#include "fanuc/fanuc_front_end.hpp"
+
+#include <cmath>
+#include <map>
+#include <optional>
+
+#include "block_model.hpp"
+#include "expression.hpp"
+#include "lowering/dialect_machine.hpp"
+#include "lowering/dialect_table.hpp"
+#include "lowering/infix_expression.hpp"
+#include "ncbridge/common/error.hpp"
+
+namespace ncbridge::interpreter::fanuc {
+
+using lowering::DialectMachine;
+using lowering::DialectTable;
+using lowering::ExpressionSyntax;
+using lowering::InfixParser;
+using lowering::NeutralBlock;
+using lowering::Point3;
+using lowering::ProgramText;
+
+Flavour fanuc_flavour() { return Flavour{}; }
+
+namespace {
+
+constexpr std::size_t kMaxCallDepth = 32;
+
+// One line read: the neutral block model plus what Fanuc needs on top of it.
+struct Line {
+  Block block;
+  std::vector<bool> literal;    // per word: a plain number (subject to least-increment scaling)
+  std::vector<bool> had_point;  // per word: written with a decimal point
+  bool then_form = false;       // IF [..] THEN <assignment>
+  bool program_number = false;  // an O line
+  double o_number = 0;
+  void clear() {
+    block.clear();
+    literal.clear();
+    had_point.clear();
+    then_form = program_number = false;
+  }
+};
+
+ExpressionSyntax fanuc_syntax() {
+  ExpressionSyntax syntax;
+  syntax.open = '[';
+  syntax.close = ']';
+  syntax.word_comparisons = true;
+  return syntax;
+}
+
+class LineReader {
+ public:
+  LineReader(const Flavour& flavour) : flavour_(flavour), syntax_(fanuc_syntax()) {
+    syntax_.variable = [this](std::string_view s, std::size_t& pos, Block& b) -> ExprRef {
+      if (s[pos] != '#') return kNoExpr;
+      std::size_t at = pos;
+      ++pos;
+      InfixParser inner(s, pos, b, syntax_, *file_, line_);
+      ExprRef number = inner.primary();
+      pos = inner.position();
+      ExprNode node;
+      node.op = ExprOp::Parameter;
+      node.a = number;
+      node.column = static_cast<std::uint32_t>(at + 1);
+      b.nodes.push_back(node);
+      return static_cast<ExprRef>(b.nodes.size() - 1);
+    };
+  }
+
+  void read(std::string_view s, std::uint32_t line, const std::string& file, Line& out) {
+    out.clear();
+    s_ = s;
+    line_ = line;
+    file_ = &file;
+    out.block.line = line;
+    pos_ = 0;
+    skip_space();
+    if (pos_ < s_.size() && s_[pos_] == '%') {
+      out.block.percent = true;
+      return;
+    }
+    if (pos_ < s_.size() && s_[pos_] == '/') {
+      out.block.block_delete = true;
+      ++pos_;
+    }
+    while (skip_space(), pos_ < s_.size()) item(out);
+  }
+
+ private:
+  [[noreturn]] void fail(std::size_t at, const std::string& message) const {
+    throw InputError({*file_, line_, static_cast<std::uint32_t>(at + 1)}, message);
+  }
+  void skip_space() {
+    while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t')) ++pos_;
+  }
+  bool keyword(std::string_view word) {
+    std::size_t p = pos_;
+    for (char c : word) {
+      if (p >= s_.size() || lowering::upper(s_[p]) != c) return false;
+      ++p;
+    }
+    pos_ = p;
+    return true;
+  }
+  ExprRef expression(Block& b) {
+    InfixParser parser(s_, pos_, b, syntax_, *file_, line_);
+    ExprRef r = parser.expression();
+    pos_ = parser.position();
+    return r;
+  }
+  ExprRef bracketed(Block& b, const char* what) {
+    skip_space();
+    if (pos_ >= s_.size() || s_[pos_] != '[') fail(pos_, std::string("'[' expected after ") + what);
+    InfixParser parser(s_, pos_, b, syntax_, *file_, line_);
+    ExprRef r = parser.primary();
+    pos_ = parser.position();
+    return r;
+  }
+  ExprRef value(Block& b, bool& literal, bool& had_point) {
+    skip_space();
+    std::size_t p = pos_;
+    double v = 0;
+    if (p < s_.size() && (lowering::is_digit(s_[p]) || s_[p] == '.' || s_[p] == '-' || s_[p] == '+') &&
+        lowering::read_decimal(s_, p, v, &had_point)) {
+      literal = true;
+      ExprRef r = InfixParser::number(b, v, static_cast<std::uint32_t>(pos_ + 1));
+      pos_ = p;
+      return r;
+    }
+    literal = false;
+    had_point = true;
+    InfixParser parser(s_, pos_, b, syntax_, *file_, line_);
+    ExprRef r = parser.primary();
+    pos_ = parser.position();
+    return r;
+  }
+
+  void assignment(Line& out) {
+    Assignment a;
+    a.column = static_cast<std::uint32_t>(pos_ + 1);
+    a.target = syntax_.variable(s_, pos_, out.block);
+    skip_space();
+    if (pos_ >= s_.size() || s_[pos_] != '=') fail(pos_, "'=' missing in variable assignment");
+    ++pos_;
+    a.value = expression(out.block);
+    out.block.assignments.push_back(a);
+  }
+
+  void item(Line& out) {
+    std::size_t start = pos_;
+    char c = s_[pos_];
+    Block& b = out.block;
+    if (c == '(') {
+      std::size_t close = s_.find(')', pos_);
+      if (close == std::string_view::npos) fail(start, "Unclosed comment: ')' missing");
+      CommentText comment;
+      comment.text = s_.substr(pos_ + 1, close - pos_ - 1);
+      comment.column = static_cast<std::uint32_t>(start + 1);
+      b.comments.push_back(comment);
+      pos_ = close + 1;
+      return;
+    }
+    if (c == ';') {  // end of block
+      ++pos_;
+      skip_space();
+      if (pos_ < s_.size() && s_[pos_] != '(') fail(pos_, "Text after the end-of-block ';'");
+      return;
+    }
+    if (c == '#') {
+      assignment(out);
+      return;
+    }
+    if (!lowering::is_alpha(c)) fail(start, std::string("Bad character '") + c + "'");
+    bool keyword_follows = pos_ + 1 < s_.size() && lowering::is_alpha(s_[pos_ + 1]);
+    if (keyword_follows) {
+      if (!flavour_.macro_b) fail(start, "Unknown word: this dialect has no macro statements");
+      Statement& st = b.statement;
+      st.column = static_cast<std::uint32_t>(start + 1);
+      if (keyword("IF")) {
+        st.kind = StatementKind::If;
+        st.condition = bracketed(b, "IF");
+        skip_space();
+        if (keyword("GOTO")) {
+          st.arguments.push_back(value_expr(b));
+        } else if (keyword("THEN")) {
+          out.then_form = true;
+          skip_space();
+          if (pos_ >= s_.size() || s_[pos_] != '#') fail(pos_, "THEN must be followed by an assignment");
+          assignment(out);
+        } else {
+          fail(pos_, "IF must be followed by GOTO or THEN");
+        }
+        return;
+      }
+      if (keyword("GOTO")) {
+        st.kind = StatementKind::Goto;
+        st.arguments.push_back(value_expr(b));
+        return;
+      }
+      if (keyword("WHILE")) {
+        st.kind = StatementKind::While;
+        st.condition = bracketed(b, "WHILE");
+        skip_space();
+        if (!keyword("DO")) fail(pos_, "WHILE must be followed by DO m");
+        st.label_number = loop_id();
+        return;
+      }
+      if (keyword("DO")) {
+        st.kind = StatementKind::Do;
+        st.label_number = loop_id();
+        return;
+      }
+      if (keyword("END")) {
+        st.kind = StatementKind::EndWhile;
+        st.label_number = loop_id();
+        return;
+      }
+      fail(start, "Unknown word starting with '" + std::string(1, lowering::upper(c)) + "'");
+    }
+    ++pos_;
+    char letter = static_cast<char>(lowering::upper(c) - 'A' + 'a');
+    if (letter == 'n' && b.words.empty() && b.n_number < 0) {
+      skip_space();
+      double n = 0;
+      std::size_t p = pos_;
+      if (!lowering::read_decimal(s_, p, n) || n < 0) fail(start, "N must be followed by a sequence number");
+      b.n_number = static_cast<std::int64_t>(n);
+      b.n_digits = static_cast<std::uint8_t>(p - pos_);
+      pos_ = p;
+      return;
+    }
+    if (letter == 'o' && b.words.empty()) {
+      skip_space();
+      double o = 0;
+      std::size_t p = pos_;
+      if (!lowering::read_decimal(s_, p, o) || o < 0) fail(start, "O must be followed by a program number");
+      out.program_number = true;
+      out.o_number = o;
+      pos_ = p;
+      return;
+    }
+    if (pos_ >= s_.size()) fail(start, std::string(1, lowering::upper(c)) + " word has no value");
+    Word w;
+    w.letter = letter;
+    w.column = static_cast<std::uint32_t>(start + 1);
+    bool literal = false, had_point = false;
+    w.value = value(b, literal, had_point);
+    b.words.push_back(w);
+    out.literal.push_back(literal);
+    out.had_point.push_back(had_point);
+  }
+
+  ExprRef value_expr(Block& b) {
+    bool literal, had_point;
+    return value(b, literal, had_point);
+  }
+  double loop_id() {
+    skip_space();
+    double id = 0;
+    std::size_t p = pos_;
+    if (!lowering::read_decimal(s_, p, id) || id < 1 || id > 3 || id != std::floor(id)) {
+      fail(pos_, "Loop identification number must be 1, 2 or 3");
+    }
+    pos_ = p;
+    return id;
+  }
+
+  const Flavour& flavour_;
+  ExpressionSyntax syntax_;
+  std::string_view s_;
+  std::size_t pos_ = 0;
+  std::uint32_t line_ = 0;
+  const std::string* file_ = nullptr;
+};
+
+// A line that cannot be a block: it starts with a run of two or more letters that is no macro
+// keyword, or with a character no block starts with.
+bool title_line(std::string_view l) {
+  std::size_t p = 0;
+  while (p < l.size() && (l[p] == ' ' || l[p] == '\t')) ++p;
+  if (p >= l.size()) return false;
+  std::size_t q = p;
+  while (q < l.size() && lowering::is_alpha(l[q])) ++q;
+  if (q - p < 2) return !lowering::is_alpha(l[p]) && l[p] != '#' && l[p] != '(' && l[p] != '/' && l[p] != '%' && l[p] != ';';
+  std::string word;
+  for (std::size_t i = p; i < q; ++i) word.push_back(lowering::upper(l[i]));
+  return word != "IF" && word != "GOTO" && word != "WHILE" && word != "END" && word != "DO";
+}
+
+struct File {
+  ProgramText text;
+  std::map<long, std::size_t> programs;               // O number -> line index
+  std::multimap<long, std::size_t> sequence_numbers;  // N number -> line index
+};
+
+// Fanuc G65 argument specification I: address -> local variable.
+int argument_variable(char letter) {
+  switch (letter) {
+    case 'a': return 1; case 'b': return 2; case 'c': return 3; case 'i': return 4; case 'j': return 5;
+    case 'k': return 6; case 'd': return 7; case 'e': return 8; case 'f': return 9; case 'h': return 11;
+    case 'm': return 13; case 'q': return 17; case 'r': return 18; case 's': return 19; case 't': return 20;
+    case 'u': return 21; case 'v': return 22; case 'w': return 23; case 'x': return 24; case 'y': return 25;
+    case 'z': return 26; default: return 0;
+  }
+}
+
+struct Value {
+  double v = 0;
+  std::uint32_t column = 0;
+  bool had_point = true;
+};
+
+class Runner {
+ public:
+  Runner(const Options& options, canonical::Sink& sink, const Flavour& flavour)
+      : options_(options), flavour_(flavour), table_(lowering::load_dialect_table(flavour.table)),
+        m_(options, sink), reader_(flavour) {}
+
+  void run(ProgramText main);
+
+ private:
+  struct Call {
+    std::size_t file, return_pc;
+    std::size_t start_file, start_pc;
+    int remaining;
+    bool macro;
+  };
+  struct Loop {
+    int id;
+    std::size_t file, pc;  // the WHILE/DO line
+  };
+
+  std::size_t add_file(ProgramText text);
+  bool step();  // false when the program ended
+  bool run_statement();
+  bool run_block();
+  void jump_to_sequence(double n, std::uint32_t column, std::size_t in_file);
+  void call_program(double number, int repeats, bool macro, std::uint32_t column);
+  bool return_from_program(std::optional<double> sequence, std::uint32_t column);
+  std::size_t find_program(long number, std::size_t& start, std::uint32_t column);
+  double eval(ExprRef ref) { return evaluate(line_.block, ref, m_.parameters(), m_.file_name()); }
+  void assign(const Assignment& a, double value);
+  double scaled(std::size_t word, double v) const;
+
+  // lowering helpers
+  std::optional<double> axis_target(char letter, const std::map<char, Value>& w, const Point3& here) const;
+  void lower_motion(NeutralBlock& nb, const std::map<char, Value>& w);
+  void lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w);
+
+  const Options& options_;
+  const Flavour& flavour_;
+  DialectTable table_;
+  DialectMachine m_;
+  LineReader reader_;
+  Line line_;
+  std::vector<File> files_;
+  std::size_t file_ = 0, pc_ = 0;
+  std::vector<Call> calls_;
+  std::vector<Loop> loops_;
+  bool seen_content_ = false;
+  std::uint64_t steps_ = 0;
+  std::uint64_t executed_blocks_ = 0;
+
+  // modal state the executor does not keep
+  bool incremental_ = false;
+  bool polar_ = false;
+  double polar_radius_ = 0, polar_angle_ = 0;
+  bool arc_centre_absolute_ = false;
+  int motion_ = 0;   // 0,1,2,3 or a cycle number (73..89); 80 = none
+  int plane_ = 17;
+  std::optional<double> cycle_r_, cycle_z_, cycle_q_, cycle_p_;
+  std::optional<double> last_r_, last_q_;
+};
+
+std::size_t Runner::add_file(ProgramText text) {
+  File f;
+  f.text = std::move(text);
+  for (std::size_t i = 0; i < f.text.size(); ++i) {
+    std::string_view l = f.text.line(i);
+    std::size_t p = 0;
+    while (p < l.size() && (l[p] == ' ' || l[p] == '\t')) ++p;
+    if (p >= l.size()) continue;
+    char c = lowering::upper(l[p]);
+    if ((c == 'O' || c == 'N') && p + 1 < l.size() && lowering::is_digit(l[p + 1])) {
+      ++p;
+      long number = 0;
+      while (p < l.size() && lowering::is_digit(l[p]) && number < 100000000) number = number * 10 + (l[p++] - '0');
+      if (c == 'O') f.programs.emplace(number, i); else f.sequence_numbers.emplace(number, i);
+    }
+  }
+  files_.push_back(std::move(f));
+  std::size_t index = files_.size() - 1;
+  m_.announce_file(static_cast<std::uint32_t>(index), files_[index].text.name);
+  return index;
+}
+
+void Runner::run(ProgramText main) {
+  add_file(std::move(main));
+  m_.at(0, files_[0].text.name, 0);
+  m_.start();
+  while (step()) {
+  }
+}
+
+bool Runner::step() {
+  File& f = files_[file_];
+  if (pc_ >= f.text.size()) {
+    m_.at(static_cast<std::uint32_t>(file_), f.text.name, static_cast<std::uint32_t>(f.text.size()));
+    if (!calls_.empty()) m_.fail(1, "Subprogram ended without M99");
+    if (options_.require_program_end) m_.fail(1, "File ended with no program end (M30/M2) or closing '%'");
+    return false;
+  }
+  if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
+  std::size_t index = pc_++;
+  try {
+    reader_.read(f.text.line(index), static_cast<std::uint32_t>(index + 1), f.text.name, line_);
+  } catch (const InputError&) {
+    // A title line before the first block (FreeCAD's Fanuc post writes the file name there).
+    if (executed_blocks_ != 0 || !title_line(f.text.line(index))) throw;
+    m_.at(static_cast<std::uint32_t>(file_), f.text.name, static_cast<std::uint32_t>(index + 1));
+    m_.comment("ncbridge: line " + std::to_string(index + 1) + " is not a block (a program title?): ignored");
+    return true;
+  }
+  const Block& b = line_.block;
+  m_.at(static_cast<std::uint32_t>(file_), f.text.name, static_cast<std::uint32_t>(index + 1), b.n_number, b.n_digits);
+  if (b.percent) {
+    if (!seen_content_) {
+      seen_content_ = true;
+      return true;
+    }
+    return calls_.empty() ? false : true;  // the closing '%' ends the tape
+  }
+  if (line_.program_number) {
+    // Reaching the next program's O line in the main flow ends the main program's text.
+    if (seen_content_ && calls_.empty() && file_ == 0 && index > 0 && !files_[0].programs.empty() &&
+        files_[0].programs.begin()->second != index) {
+      if (options_.require_program_end) m_.fail(1, "Main program ran into program O" + std::to_string(static_cast<long>(line_.o_number)) + " without M30/M2");
+      return false;
+    }
+  }
+  seen_content_ = true;
+  if (b.statement.kind != StatementKind::None) return run_statement();
+  return run_block();
+}
+
+void Runner::assign(const Assignment& a, double value) {
+  const ExprNode& target = line_.block.nodes[a.target];
+  int number = parameter_number(line_.block, a.target, m_.parameters(), m_.file_name());
+  static_cast<void>(target);
+  if (number == 3000) {
+    std::string text = line_.block.comments.empty() ? std::string() : std::string(line_.block.comments.front().text);
+    m_.fail(a.column, "Macro alarm " + std::to_string(static_cast<long>(value)) + (text.empty() ? "" : ": " + text));
+  }
+  m_.parameters().set_numbered(number, value);
+}
+
+bool Runner::run_statement() {
+  const Statement& st = line_.block.statement;
+  switch (st.kind) {
+    case StatementKind::If: {
+      bool taken = eval(st.condition) != 0.0;
+      if (line_.then_form) {
+        if (taken) {
+          for (const Assignment& a : line_.block.assignments) assign(a, eval(a.value));
+        }
+        return true;
+      }
+      if (taken) jump_to_sequence(eval(st.arguments.front()), st.column, file_);
+      return true;
+    }
+    case StatementKind::Goto:
+      jump_to_sequence(eval(st.arguments.front()), st.column, file_);
+      return true;
+    case StatementKind::While: {
+      int id = static_cast<int>(st.label_number);
+      std::size_t here = pc_ - 1;
+      bool again = !loops_.empty() && loops_.back().id == id && loops_.back().pc == here && loops_.back().file == file_;
+      if (eval(st.condition) != 0.0) {
+        if (!again) loops_.push_back(Loop{id, file_, here});
+        return true;
+      }
+      if (again) loops_.pop_back();
+      // skip to the matching END
+      const File& f = files_[file_];
+      int depth = 0;
+      Line scan;
+      for (std::size_t i = pc_; i < f.text.size(); ++i) {
+        reader_.read(f.text.line(i), static_cast<std::uint32_t>(i + 1), f.text.name, scan);
+        StatementKind k = scan.block.statement.kind;
+        if ((k == StatementKind::While || k == StatementKind::Do) && scan.block.statement.label_number == id) ++depth;
+        if (k == StatementKind::EndWhile && scan.block.statement.label_number == id) {
+          if (depth == 0) {
+            pc_ = i + 1;
+            return true;
+          }
+          --depth;
+        }
+      }
+      m_.fail(st.column, "WHILE ... DO " + std::to_string(id) + " has no END " + std::to_string(id));
+    }
+    case StatementKind::Do: {
+      int id = static_cast<int>(st.label_number);
+      std::size_t here = pc_ - 1;
+      if (loops_.empty() || loops_.back().pc != here || loops_.back().file != file_) loops_.push_back(Loop{id, file_, here});
+      return true;
+    }
+    case StatementKind::EndWhile: {
+      int id = static_cast<int>(st.label_number);
+      if (loops_.empty() || loops_.back().id != id || loops_.back().file != file_) {
+        m_.fail(st.column, "END " + std::to_string(id) + " without a matching DO " + std::to_string(id));
+      }
+      pc_ = loops_.back().pc;
+      return true;
+    }
+    default:
+      m_.fail(st.column, "Statement not supported in this dialect");
+  }
+}
+
+void Runner::jump_to_sequence(double n, std::uint32_t column, std::size_t in_file) {
+  long target = std::lround(n);
+  const File& f = files_[in_file];
+  auto [first, last] = f.sequence_numbers.equal_range(target);
+  if (first == last) m_.fail(column, "GOTO " + std::to_string(target) + ": no block N" + std::to_string(target));
+  // the first N after the current block, else the first in the program
+  std::size_t best = first->second;
+  for (auto it = first; it != last; ++it) {
+    if (it->second >= pc_) {
+      best = it->second;
+      break;
+    }
+  }
+  // leaving loops whose range the jump leaves is what the controller does implicitly
+  while (!loops_.empty() && loops_.back().file == in_file && best < loops_.back().pc) loops_.pop_back();
+  file_ = in_file;
+  pc_ = best;
+}
+
+std::size_t Runner::find_program(long number, std::size_t& start, std::uint32_t column) {
+  for (std::size_t i : {file_, std::size_t{0}}) {
+    auto it = files_[i].programs.find(number);
+    if (it != files_[i].programs.end()) {
+      start = it->second + 1;
+      return i;
+    }
+  }
+  for (std::size_t i = 1; i < files_.size(); ++i) {
+    auto it = files_[i].programs.find(number);
+    if (it != files_[i].programs.end()) {
+      start = it->second + 1;
+      return i;
+    }
+  }
+  std::vector<std::filesystem::path> dirs = options_.subroutine_path;
+  dirs.push_back(std::filesystem::path(files_[0].text.name).parent_path());
+  char o4[16];
+  std::snprintf(o4, sizeof o4, "O%04ld", number);
+  std::vector<std::string> names;
+  for (const std::string& stem : {std::string(o4), "O" + std::to_string(number), std::to_string(number)}) {
+    for (const char* ext : {"", ".nc", ".NC", ".tap", ".txt"}) names.push_back(stem + ext);
+  }
+  for (const auto& dir : dirs) {
+    for (const auto& name : names) {
+      std::filesystem::path candidate = (dir.empty() ? std::filesystem::path(".") : dir) / name;
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(candidate, ec)) continue;
+      std::size_t index = add_file(ProgramText::from_file(candidate));
+      auto it = files_[index].programs.find(number);
+      start = it == files_[index].programs.end() ? 0 : it->second + 1;
+      return index;
+    }
+  }
+  m_.fail(column, "Subprogram O" + std::to_string(number) + " not found (in this file or as a file named " +
+                      std::string(o4) + " in the subroutine path)");
+}
+
+void Runner::call_program(double number, int repeats, bool macro, std::uint32_t column) {
+  if (calls_.size() >= kMaxCallDepth) m_.fail(column, "Too many nested subprogram calls");
+  if (repeats < 1) return;
+  std::size_t start = 0;
+  std::size_t file = find_program(std::lround(number), start, column);
+  calls_.push_back(Call{file_, pc_, file, start, repeats - 1, macro});
+  file_ = file;
+  pc_ = start;
+}
+
+bool Runner::return_from_program(std::optional<double> sequence, std::uint32_t column) {
+  if (calls_.empty()) {
+    // M99 in a main program restarts it on the control; as a conversion, it ends the program.
+    m_.comment("ncbridge: M99 in the main program ends it (a controller would restart it)");
+    return false;
+  }
+  Call& c = calls_.back();
+  if (c.remaining > 0) {
+    --c.remaining;
+    file_ = c.start_file;
+    pc_ = c.start_pc;
+    return true;
+  }
+  if (c.macro) m_.parameters().pop_scope();
+  file_ = c.file;
+  pc_ = c.return_pc;
+  calls_.pop_back();
+  while (!loops_.empty() && loops_.back().file != file_) loops_.pop_back();
+  if (sequence) jump_to_sequence(*sequence, column, file_);
+  return true;
+}
+
+double Runner::scaled(std::size_t word, double v) const {
+  if (!line_.literal[word] || line_.had_point[word]) return v;
+  switch (line_.block.words[word].letter) {
+    case 'x': case 'y': case 'z': case 'a': case 'b': case 'c': case 'u': case 'v': case 'w':
+    case 'i': case 'j': case 'k': case 'r': case 'q': {
+      double inc = m_.state().units == canonical::Units::Inches ? table_.setting("least_input_increment_inch", 0)
+                                                               : table_.setting("least_input_increment_mm", 0);
+      return inc > 0 ? v * inc : v;
+    }
+    default:
+      return v;
+  }
+}
+
+bool Runner::run_block() {
+  const Block& b = line_.block;
+  if (b.words.empty() && b.assignments.empty() && b.comments.empty()) return true;
+  if (!b.words.empty()) ++executed_blocks_;
+  for (const Assignment& a : b.assignments) assign(a, eval(a.value));
+
+  NeutralBlock nb;
+  std::map<char, Value> w;
+  std::vector<Value> gs, ms;
+  for (std::size_t i = 0; i < b.words.size(); ++i) {
+    const Word& word = b.words[i];
+    Value v{scaled(i, eval(word.value)), word.column, line_.had_point[i]};
+    if (word.letter == 'g') {
+      gs.push_back(v);
+    } else if (word.letter == 'm') {
+      ms.push_back(v);
+    } else {
+      if (w.count(word.letter)) {
+        m_.fail(word.column, std::string("Multiple ") + static_cast<char>(word.letter - 'a' + 'A') + " words on one line");
+      }
+      w[word.letter] = v;
+    }
+  }
+  for (const auto& c : b.comments) {
+    nb.comment = std::string(c.text);
+    nb.has_comment = true;
+  }
+
+  // G codes through the dictionary
+  enum class Special { None, Dwell, Rotation, Local, Macro, DataSetting, Home, Machine, SetOrigin };
+  Special special = Special::None;
+  bool rotation_on = false;
+  std::uint32_t cancel_column = 0;
+  for (const Value& g : gs) {
+    const lowering::CodeEntry* e = table_.g(g.v);
+    if (e == nullptr) m_.fail(g.column, "G" + lowering::code_key(g.v) + " is not a " + table_.dialect + " G code ncbridge supports");
+    const std::string& meta = e->meta;
+    if (e->cycle) {
+      motion_ = *e->cycle;
+    } else if (meta == "rapid" || meta == "linear" || meta == "circular_cw" || meta == "circular_ccw") {
+      motion_ = static_cast<int>(*e->rs274);
+      cycle_r_.reset(); cycle_z_.reset(); cycle_q_.reset(); cycle_p_.reset();
+    } else if (meta == "cycle_cancel") {
+      motion_ = 80;
+      cancel_column = g.column;
+      cycle_r_.reset(); cycle_z_.reset(); cycle_q_.reset(); cycle_p_.reset();
+    } else if (meta == "absolute") {
+      incremental_ = false;
+    } else if (meta == "incremental") {
+      incremental_ = true;
+    } else if (meta == "arc_centre_absolute") {
+      arc_centre_absolute_ = true;
+    } else if (meta == "arc_centre_incremental") {
+      arc_centre_absolute_ = false;
+    } else if (meta == "polar_on" || meta == "polar_off") {
+      polar_ = meta == "polar_on";
+      if (polar_) {
+        Point3 here = m_.position();
+        polar_radius_ = std::hypot(here.x, here.y);
+        polar_angle_ = std::atan2(here.y, here.x) * 180.0 / std::numbers::pi;
+      }
+    } else if (meta == "rotation_on" || meta == "rotation_off") {
+      special = Special::Rotation;
+      rotation_on = meta == "rotation_on";
+    } else if (meta == "dwell") {
+      special = Special::Dwell;
+    } else if (meta == "local_coordinate_system") {
+      special = Special::Local;
+    } else if (meta == "macro_call") {
+      special = Special::Macro;
+    } else if (meta == "data_setting") {
+      special = Special::DataSetting;
+      nb.g(10, g.column);
+    } else if (meta == "exact_stop_block") {
+      // G9: exact stop for this block; the canonical model has no per-block stop
+    } else if (e->rs274) {
+      if (meta == "plane_xy") plane_ = 17;
+      if (meta == "plane_xz") plane_ = 18;
+      if (meta == "plane_yz") plane_ = 19;
+      if (meta == "reference_return") special = Special::Home;
+      if (meta == "machine_coordinates") special = Special::Machine;
+      if (meta == "set_work_coordinates") special = Special::SetOrigin;
+      nb.g(*e->rs274, g.column);
+    } else {
+      m_.fail(g.column, "G" + lowering::code_key(g.v) + " (" + meta + ") is not supported yet");
+    }
+  }
+
+  // G80 with G0/G1 in the same block: the motion code cancels the cycle by itself
+  if (cancel_column != 0 && motion_ == 80) nb.g(80, cancel_column);
+
+  // M codes through the dictionary; subprogram calls run after the block
+  std::optional<Value> call, ret;
+  for (const Value& mv : ms) {
+    const lowering::CodeEntry* e = table_.m(mv.v);
+    if (e == nullptr) m_.fail(mv.column, "M" + lowering::code_key(mv.v) + " is not a " + table_.dialect + " M code ncbridge supports");
+    if (e->meta == "subprogram_call") {
+      call = mv;
+    } else if (e->meta == "subprogram_return") {
+      ret = mv;
+    } else if (e->rs274) {
+      nb.m(static_cast<int>(*e->rs274), mv.column);
+    } else {
+      m_.fail(mv.column, "M" + lowering::code_key(mv.v) + " (" + e->meta + ") is not supported yet");
+    }
+  }
+
+  // words that pass through unchanged
+  for (char letter : {'f', 's', 't', 'h', 'd'}) {
+    if (special == Special::Macro) break;
+    auto it = w.find(letter);
+    if (it != w.end()) nb.add(letter, it->second.v, it->second.column);
+  }
+
+  switch (special) {
+    case Special::Dwell: {
+      double seconds = 0;
+      std::uint32_t col = gs.front().column;
+      if (w.count('p')) {
+        seconds = flavour_.dwell_p_in_ms && !w['p'].had_point ? w['p'].v / 1000.0 : w['p'].v;
+      } else if (w.count('x')) {
+        seconds = w['x'].v;
+      } else if (w.count('u')) {
+        seconds = w['u'].v;
+      } else {
+        m_.fail(col, "G4 needs a dwell time (P or X)");
+      }
+      nb.g(4, col);
+      nb.add('p', seconds, col);
+      break;
+    }
+    case Special::Rotation: {
+      Point3 here = m_.position();
+      if (rotation_on) {
+        double cx = w.count('x') ? w['x'].v : here.x;
+        double cy = w.count('y') ? w['y'].v : here.y;
+        double angle = w.count('r') ? w['r'].v : 0.0;
+        Point3 centre = m_.frame.to_executor({cx, cy, 0});
+        Point3 base_offset = m_.frame.offset;
+        double base_rotation = m_.frame.rotation_deg;
+        static_cast<void>(base_rotation);
+        m_.frame.rotation_deg = (incremental_ ? m_.frame.rotation_deg : 0.0) + angle;
+        // the centre stays where it is: offset = centre - R * (centre - base offset)
+        lowering::Frame r{{0, 0, 0}, m_.frame.rotation_deg};
+        Point3 rel{centre.x - base_offset.x, centre.y - base_offset.y, 0};
+        Point3 rr = r.rotate(rel);
+        m_.frame.offset = {centre.x - rr.x, centre.y - rr.y, base_offset.z};
+      } else {
+        m_.frame.rotation_deg = 0;
+        m_.frame.offset = {0, 0, 0};
+      }
+      break;
+    }
+    case Special::Local: {
+      // G52: local coordinate system shift relative to the work system (absolute values)
+      m_.frame.offset = {w.count('x') ? w['x'].v : 0.0, w.count('y') ? w['y'].v : 0.0, w.count('z') ? w['z'].v : 0.0};
+      break;
+    }
+    case Special::DataSetting:
+      for (char letter : {'l', 'p', 'x', 'y', 'z', 'a', 'b', 'c', 'r'}) {
+        if (w.count(letter)) nb.add(letter, w[letter].v, w[letter].column);
+      }
+      break;
+    case Special::Machine:
+    case Special::SetOrigin:
+      for (char letter : {'x', 'y', 'z', 'a', 'b', 'c'}) {
+        if (w.count(letter)) nb.add(letter, w[letter].v, w[letter].column);
+      }
+      if (special == Special::Machine) nb.g(motion_ == 1 ? 1 : 0, gs.front().column);
+      break;
+    case Special::Home: {
+      Point3 here = m_.position();
+      m_.put_axes(nb, axis_target('x', w, here), axis_target('y', w, here), axis_target('z', w, here), gs.front().column);
+      break;
+    }
+    case Special::Macro:
+      break;
+    case Special::None:
+      lower_motion(nb, w);
+      break;
+  }
+
+  bool ended = m_.execute(nb);
+  if (ended) return false;
+
+  if (special == Special::Macro) {
+    std::uint32_t col = gs.front().column;
+    if (!w.count('p')) m_.fail(col, "G65 needs P (the macro's program number)");
+    int repeats = w.count('l') ? static_cast<int>(std::lround(w['l'].v)) : 1;
+    std::vector<std::pair<int, double>> args;
+    for (const auto& [letter, v] : w) {
+      if (letter == 'p' || letter == 'l') continue;
+      int var = argument_variable(letter);
+      if (var == 0) m_.fail(v.column, std::string("Address ") + static_cast<char>(letter - 'a' + 'A') + " cannot carry a G65 argument");
+      args.emplace_back(var, v.v);
+    }
+    m_.parameters().push_scope();
+    for (int i = 1; i <= Parameters::kLocalCount; ++i) m_.parameters().set_numbered(i, 0.0);
+    for (const auto& [var, v] : args) m_.parameters().set_numbered(var, v);
+    call_program(w['p'].v, 1, true, col);
+    calls_.back().remaining = repeats - 1;
+    return true;
+  }
+  if (call) {
+    if (!w.count('p')) m_.fail(call->column, "M98 needs P (the subprogram number)");
+    double p = w['p'].v;
+    int repeats = w.count('l') ? static_cast<int>(std::lround(w['l'].v)) : 1;
+    if (flavour_.packed_m98_count && !w.count('l') && p >= 10000) {
+      repeats = static_cast<int>(p / 10000);
+      p = std::fmod(p, 10000);
+    }
+    call_program(p, repeats, false, call->column);
+    return true;
+  }
+  if (ret) {
+    std::optional<double> sequence;
+    if (w.count('p')) sequence = w['p'].v;
+    return return_from_program(sequence, ret->column);
+  }
+  return true;
+}
+
+std::optional<double> Runner::axis_target(char letter, const std::map<char, Value>& w, const Point3& here) const {
+  auto it = w.find(letter);
+  if (it == w.end()) return std::nullopt;
+  double current = letter == 'x' ? here.x : letter == 'y' ? here.y : here.z;
+  return incremental_ ? current + it->second.v : it->second.v;
+}
+
+void Runner::lower_motion(NeutralBlock& nb, const std::map<char, Value>& w) {
+  bool axes = w.count('x') || w.count('y') || w.count('z') || w.count('a') || w.count('b') || w.count('c');
+  bool is_cycle = motion_ == 73 || motion_ == 74 || motion_ == 76 || (motion_ >= 81 && motion_ <= 89);
+  if (is_cycle) {
+    if (axes || w.count('r')) lower_cycle(nb, w);
+    return;
+  }
+  if (!axes && !(motion_ == 2 || motion_ == 3)) return;
+  if ((motion_ == 2 || motion_ == 3) && !axes && !w.count('i') && !w.count('j') && !w.count('k')) return;
+  if (motion_ == 80) m_.fail(w.begin()->second.column, "Axis words with no motion mode (G80 is active)");
+  Point3 here = m_.position();
+  std::optional<double> x = axis_target('x', w, here), y = axis_target('y', w, here), z = axis_target('z', w, here);
+  std::uint32_t col = w.empty() ? 1 : w.begin()->second.column;
+  if (polar_ && plane_ == 17 && (w.count('x') || w.count('y'))) {
+    if (w.count('x')) polar_radius_ = incremental_ ? polar_radius_ + w.at('x').v : w.at('x').v;
+    if (w.count('y')) polar_angle_ = incremental_ ? polar_angle_ + w.at('y').v : w.at('y').v;
+    double a = polar_angle_ * std::numbers::pi / 180.0;
+    x = polar_radius_ * std::cos(a);
+    y = polar_radius_ * std::sin(a);
+  }
+  for (char letter : {'a', 'b', 'c'}) {
+    auto it = w.find(letter);
+    if (it == w.end()) continue;
+    const canonical::Pose& p = m_.state().position;
+    double current = letter == 'a' ? p.a : letter == 'b' ? p.b : p.c;
+    nb.add(letter, incremental_ ? current + it->second.v : it->second.v, it->second.column);
+  }
+  if (motion_ == 0 || motion_ == 1) {
+    nb.g(motion_, col);
+    m_.put_axes(nb, x, y, z, col);
+    return;
+  }
+  // arcs
+  bool clockwise = motion_ == 2;
+  if (plane_ == 17) {
+    if (w.count('r')) {
+      nb.g(motion_, col);
+      m_.put_axes(nb, x, y, z, col);
+      if (!nb.has('x') && !nb.has('y')) {
+        Point3 e = m_.frame.to_executor({x.value_or(here.x), y.value_or(here.y), 0});
+        nb.add('x', e.x, col);
+        nb.add('y', e.y, col);
+      }
+      nb.add('r', w.at('r').v, w.at('r').column);
+      return;
+    }
+    double i = w.count('i') ? w.at('i').v : 0.0, j = w.count('j') ? w.at('j').v : 0.0;
+    double cx = arc_centre_absolute_ ? i : here.x + i;
+    double cy = arc_centre_absolute_ ? j : here.y + j;
+    m_.put_xy_arc(nb, clockwise, x, y, z, cx, cy, col);
+    return;
+  }
+  if (m_.frame.rotation_deg != 0) m_.fail(col, "Arcs outside the XY plane under G68 rotation are not supported");
+  nb.g(motion_, col);
+  m_.put_axes(nb, x, y, z, col);
+  for (char letter : {'i', 'j', 'k', 'r'}) {
+    auto it = w.find(letter);
+    if (it == w.end()) continue;
+    double v = it->second.v;
+    if (arc_centre_absolute_ && letter != 'r') {
+      double current = letter == 'i' ? here.x : letter == 'j' ? here.y : here.z;
+      v -= current;
+    }
+    nb.add(letter, v, it->second.column);
+  }
+}
+
+void Runner::lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w) {
+  const std::string key = std::to_string(motion_);
+  auto roles_it = table_.cycle_words.find(key);
+  std::uint32_t col = w.begin()->second.column;
+  if (roles_it == table_.cycle_words.end() || motion_ == 74 || motion_ == 76 || motion_ == 87) {
+    m_.fail(col, "G" + key + " is read but not supported yet: its motion differs from the RS274 cycles");
+  }
+  const auto& roles = roles_it->second;
+  int repeats = 1;
+  std::optional<double> dwell;
+  for (const auto& [letter, v] : w) {
+    auto r = roles.find(std::string(1, static_cast<char>(letter - 'a' + 'A')));
+    if (r == roles.end()) continue;
+    const std::string& role = r->second;
+    if (role == "retract_plane") cycle_r_ = last_r_ = v.v;
+    else if (role == "bottom") cycle_z_ = v.v;
+    else if (role == "peck") cycle_q_ = last_q_ = v.v;
+    else if (role == "repeat") repeats = static_cast<int>(std::lround(v.v));
+    else if (role == "dwell") {
+      if (v.had_point) {
+        m_.comment("ncbridge: P" + std::to_string(v.v) + " has a decimal point: read as seconds (Fanuc takes P in ms)");
+        dwell = v.v;
+      } else {
+        dwell = v.v / 1000.0;
+      }
+      cycle_p_ = dwell;
+    } else if (role == "dwell_seconds") {
+      dwell = cycle_p_ = v.v;
+    }
+  }
+  const std::string g = "G" + key;
+  if (!cycle_r_) {
+    if (!last_r_) m_.fail(col, g + " needs R (the R point)");
+    m_.comment("ncbridge: " + g + " without R: the previous cycle's R point is used");
+    cycle_r_ = last_r_;
+  }
+  if (!cycle_z_) m_.fail(col, g + " needs Z (the hole bottom)");
+  bool needs_q = motion_ == 73 || motion_ == 83;
+  if (needs_q && !cycle_q_) {
+    if (!last_q_) m_.fail(col, g + " needs Q (the peck depth)");
+    m_.comment("ncbridge: " + g + " without Q: the previous cycle's peck depth is used");
+    cycle_q_ = last_q_;
+  }
+  if (repeats < 0) m_.fail(w.count('k') ? w.at('k').column : col, "Negative repeat count");
+  if (repeats == 0) return;  // K0: store the cycle data, drill nothing
+
+  Point3 here = m_.position();
+  double r_abs = incremental_ ? here.z + *cycle_r_ : *cycle_r_;
+  double z_abs = incremental_ ? r_abs + *cycle_z_ : *cycle_z_;
+  double dx = 0, dy = 0;
+  Point3 hole = here;
+  if (incremental_) {
+    dx = w.count('x') ? w.at('x').v : 0.0;
+    dy = w.count('y') ? w.at('y').v : 0.0;
+  } else {
+    if (w.count('x')) hole.x = w.at('x').v;
+    if (w.count('y')) hole.y = w.at('y').v;
+  }
+  if (polar_ && (w.count('x') || w.count('y'))) {
+    if (w.count('x')) polar_radius_ = w.at('x').v;
+    if (w.count('y')) polar_angle_ = w.at('y').v;
+    double a = polar_angle_ * std::numbers::pi / 180.0;
+    hole.x = polar_radius_ * std::cos(a);
+    hole.y = polar_radius_ * std::sin(a);
+    dx = dy = 0;
+  }
+  for (int k = 0; k < repeats; ++k) {
+    if (k > 0) nb.clear();
+    hole.x += dx;
+    hole.y += dy;
+    Point3 e = m_.frame.to_executor({hole.x, hole.y, 0});
+    nb.g(motion_, col);
+    nb.add('x', e.x, col);
+    nb.add('y', e.y, col);
+    nb.add('z', z_abs + m_.frame.offset.z, col);
+    nb.add('r', r_abs + m_.frame.offset.z, col);
+    if (needs_q) nb.add('q', *cycle_q_, col);
+    bool needs_p = motion_ == 82 || motion_ == 86 || motion_ == 88 || motion_ == 89;
+    if (needs_p || (motion_ == 84 && cycle_p_)) nb.add('p', cycle_p_.value_or(0.0), col);
+    if (k + 1 < repeats) {
+      if (m_.execute(nb)) return;
+    }
+  }
+}
+
+}  // namespace
+
+void run(ProgramText program, const Options& options, canonical::Sink& sink, const Flavour& flavour) {
+  Runner runner(options, sink, flavour);
+  runner.run(std::move(program));
+}
+
+}  // namespace ncbridge::interpreter::fanuc

@@ -1,0 +1,1064 @@
+// Heidenhain conversational: one block at a time, read into a small word list, evaluated, then
+// lowered. Corner rounding (RND) and chamfers (CHF) look one path block ahead, as the control
+// does, to shorten the element before the corner.
+#include "heidenhain/heidenhain_front_end.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <optional>
+
+#include "block_model.hpp"
+#include "expression.hpp"
+#include "lowering/dialect_machine.hpp"
+#include "lowering/dialect_table.hpp"
+#include "lowering/infix_expression.hpp"
+#include "ncbridge/common/error.hpp"
+
+namespace ncbridge::interpreter::heidenhain {
+
+using lowering::DialectMachine;
+using lowering::InfixParser;
+using lowering::NeutralBlock;
+using lowering::Point3;
+using lowering::ProgramText;
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// One word of a block: FMAX, X+10, IX-5, DR-, R0, Q1 (a variable as value), M3, ...
+struct HWord {
+  std::string name;            // upper case
+  ExprRef value = kNoExpr;     // kNoExpr: no value
+  char sign = 0;               // '+'/'-' when the word is only a sign (DR-)
+  std::uint32_t column = 0;
+};
+
+enum class Kind {
+  Empty, Comment, BeginPgm, EndPgm, BlkForm, ToolCall, ToolDef, CyclDef, CyclCall, Label, CallLabel, CallPgm,
+  Assign, FnJump, Stop, Path
+};
+
+struct HBlock {
+  Kind kind = Kind::Empty;
+  std::string keyword;         // path function (L, C, CC, ...), cycle number text ("200", "1.1")
+  std::string text;            // rest of line (BEGIN PGM units, CYCL DEF text, label name, comment)
+  std::vector<HWord> words;
+  Block exprs;                 // expression arena (and assignment target/value)
+  ExprRef target = kNoExpr, value = kNoExpr;  // Assign / FnJump comparison operands
+  ExprRef value2 = kNoExpr;
+  std::string op;              // FnJump comparison
+  std::int64_t n = -1;
+  std::uint32_t column = 1;    // of the keyword
+  bool label_is_name = false;
+  double label_number = 0;
+  std::string tool_name;       // TOOL CALL "name"
+};
+
+std::string up(std::string_view s) {
+  std::string r(s);
+  for (char& c : r) c = lowering::upper(c);
+  return r;
+}
+
+class Reader {
+ public:
+  Reader() {
+    syntax_.open = '(';
+    syntax_.close = ')';
+    syntax_.word_comparisons = false;
+    syntax_.symbol_comparisons = false;
+    syntax_.variable = [](std::string_view s, std::size_t& pos, Block& b) -> ExprRef {
+      std::size_t p = pos;
+      if (p >= s.size() || lowering::upper(s[p]) != 'Q') return kNoExpr;
+      ++p;
+      std::string name = "_q";
+      if (p < s.size() && (lowering::upper(s[p]) == 'L' || lowering::upper(s[p]) == 'R' || lowering::upper(s[p]) == 'S')) {
+        name.push_back(static_cast<char>(lowering::upper(s[p]) - 'A' + 'a'));
+        ++p;
+      }
+      std::size_t digits = p;
+      while (p < s.size() && lowering::is_digit(s[p])) name.push_back(s[p++]);
+      if (p == digits) return kNoExpr;
+      ExprNode node;
+      node.op = ExprOp::NamedParameter;
+      node.column = static_cast<std::uint32_t>(pos + 1);
+      node.name_begin = static_cast<std::uint32_t>(b.names.size());
+      node.name_length = static_cast<std::uint32_t>(name.size());
+      b.names += name;
+      b.nodes.push_back(node);
+      pos = p;
+      return static_cast<ExprRef>(b.nodes.size() - 1);
+    };
+  }
+
+  void read(std::string_view s, std::uint32_t line, const std::string& file, HBlock& out) {
+    s_ = s;
+    pos_ = 0;
+    line_ = line;
+    file_ = &file;
+    out = HBlock{};
+    out.exprs.line = line;
+    skip();
+    if (pos_ >= s_.size()) return;
+    if (s_[pos_] == ';' || s_[pos_] == '*') {
+      out.kind = Kind::Comment;
+      out.text = std::string(s_.substr(pos_ + 1));
+      return;
+    }
+    if (lowering::is_digit(s_[pos_])) {
+      std::int64_t n = 0;
+      while (pos_ < s_.size() && lowering::is_digit(s_[pos_]) && n < 100000000) n = n * 10 + (s_[pos_++] - '0');
+      out.n = n;
+      skip();
+      if (pos_ >= s_.size()) return;
+    }
+    out.column = static_cast<std::uint32_t>(pos_ + 1);
+    if (s_[pos_] == ';' || s_[pos_] == '*') {
+      out.kind = Kind::Comment;
+      out.text = std::string(s_.substr(pos_ + 1));
+      return;
+    }
+    // strip a trailing `;comment` and `~` continuation marks
+    std::size_t semi = find_comment_start();
+    if (semi != std::string_view::npos) s_ = s_.substr(0, semi);
+    if (keyword("BEGIN PGM")) {
+      out.kind = Kind::BeginPgm;
+      out.text = up(s_.substr(pos_));
+    } else if (keyword("END PGM")) {
+      out.kind = Kind::EndPgm;
+    } else if (keyword("BLK FORM")) {
+      out.kind = Kind::BlkForm;
+    } else if (keyword("TOOL CALL") || keyword("TOOL DEF")) {
+      out.kind = up(s_.substr(out.column - 1, 6)) == "TOOL C" ? Kind::ToolCall : Kind::ToolDef;
+      skip();
+      if (pos_ < s_.size() && s_[pos_] == '"') {
+        std::size_t close = s_.find('"', pos_ + 1);
+        if (close == std::string_view::npos) fail(pos_, "Tool name not closed by '\"'");
+        out.tool_name = std::string(s_.substr(pos_ + 1, close - pos_ - 1));
+        pos_ = close + 1;
+      } else if (pos_ < s_.size() && (lowering::is_digit(s_[pos_]) || lowering::upper(s_[pos_]) == 'Q')) {
+        HWord w;
+        w.name = "T";
+        w.column = static_cast<std::uint32_t>(pos_ + 1);
+        w.value = value(out.exprs);
+        out.words.push_back(w);
+      }
+      skip();
+      if (pos_ < s_.size() && (lowering::upper(s_[pos_]) == 'X' || lowering::upper(s_[pos_]) == 'Y' ||
+                               lowering::upper(s_[pos_]) == 'Z') &&
+          (pos_ + 1 >= s_.size() || s_[pos_ + 1] == ' ')) {
+        out.text = std::string(1, lowering::upper(s_[pos_]));  // tool axis
+        ++pos_;
+      }
+      words(out);
+    } else if (keyword("CYCL DEF")) {
+      out.kind = Kind::CyclDef;
+      skip();
+      std::size_t start = pos_;
+      while (pos_ < s_.size() && (lowering::is_digit(s_[pos_]) || s_[pos_] == '.')) ++pos_;
+      if (start == pos_) fail(start, "CYCL DEF needs a cycle number");
+      out.keyword = std::string(s_.substr(start, pos_ - start));
+      out.text = up(s_.substr(pos_));
+      out.column = static_cast<std::uint32_t>(start + 1);
+    } else if (keyword("CYCL CALL")) {
+      out.kind = Kind::CyclCall;
+      skip();
+      if (keyword("POS")) out.keyword = "POS";
+      words(out);
+    } else if (keyword("LBL")) {
+      out.kind = Kind::Label;
+      label(out);
+    } else if (keyword("CALL LBL")) {
+      out.kind = Kind::CallLabel;
+      label(out);
+      skip();
+      if (keyword("REP")) {
+        HWord w;
+        w.name = "REP";
+        w.column = static_cast<std::uint32_t>(pos_ + 1);
+        skip();
+        w.value = value(out.exprs);
+        out.words.push_back(w);
+      }
+      skip();
+      if (pos_ < s_.size()) fail(pos_, "Unexpected text after CALL LBL");
+    } else if (keyword("CALL PGM")) {
+      out.kind = Kind::CallPgm;
+      skip();
+      out.text = std::string(s_.substr(pos_));
+      while (!out.text.empty() && out.text.back() == ' ') out.text.pop_back();
+    } else if (keyword("FN")) {
+      fn(out);
+    } else if (keyword("STOP")) {
+      out.kind = Kind::Stop;
+      words(out);
+    } else if (lowering::upper(s_[pos_]) == 'Q' && assignment_follows()) {
+      out.kind = Kind::Assign;
+      assignment(out);
+    } else {
+      static constexpr std::string_view kPaths[] = {"RND", "CHF", "CC", "CR", "CT", "CP", "LP", "L", "C"};
+      for (std::string_view p : kPaths) {
+        std::size_t save = pos_;
+        if (keyword(p) && (pos_ >= s_.size() || s_[pos_] == ' ' || s_[pos_] == '\t')) {
+          out.kind = Kind::Path;
+          out.keyword = std::string(p);
+          words(out);
+          return;
+        }
+        pos_ = save;
+      }
+      fail(pos_, "Unknown Heidenhain block '" + std::string(s_.substr(pos_, 12)) + "'");
+    }
+  }
+
+ private:
+  [[noreturn]] void fail(std::size_t at, const std::string& message) const {
+    throw InputError({*file_, line_, static_cast<std::uint32_t>(at + 1)}, message);
+  }
+  void skip() {
+    while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '~')) ++pos_;
+  }
+  std::size_t find_comment_start() const {
+    bool quoted = false;
+    for (std::size_t i = pos_; i < s_.size(); ++i) {
+      if (s_[i] == '"') quoted = !quoted;
+      if (!quoted && s_[i] == ';') return i;
+    }
+    return std::string_view::npos;
+  }
+  // A keyword of one or more space-separated parts, case-insensitive.
+  bool keyword(std::string_view word) {
+    std::size_t p = pos_;
+    for (char c : word) {
+      if (c == ' ') {
+        if (p >= s_.size() || (s_[p] != ' ' && s_[p] != '\t')) return false;
+        while (p < s_.size() && (s_[p] == ' ' || s_[p] == '\t')) ++p;
+        continue;
+      }
+      if (p >= s_.size() || lowering::upper(s_[p]) != c) return false;
+      ++p;
+    }
+    pos_ = p;
+    return true;
+  }
+  bool assignment_follows() const {
+    std::size_t p = pos_ + 1;
+    while (p < s_.size() && (lowering::is_alpha(s_[p]) || lowering::is_digit(s_[p]))) ++p;
+    while (p < s_.size() && s_[p] == ' ') ++p;
+    return p < s_.size() && s_[p] == '=';
+  }
+  ExprRef formula(Block& b) {
+    InfixParser parser(s_, pos_, b, syntax_, *file_, line_);
+    ExprRef r = parser.expression();
+    pos_ = parser.position();
+    return r;
+  }
+  ExprRef value(Block& b) {
+    skip();
+    InfixParser parser(s_, pos_, b, syntax_, *file_, line_);
+    ExprRef r = parser.primary();
+    pos_ = parser.position();
+    return r;
+  }
+  void label(HBlock& out) {
+    skip();
+    if (pos_ < s_.size() && s_[pos_] == '"') {
+      std::size_t close = s_.find('"', pos_ + 1);
+      if (close == std::string_view::npos) fail(pos_, "Label name not closed by '\"'");
+      out.label_is_name = true;
+      out.text = up(s_.substr(pos_ + 1, close - pos_ - 1));
+      pos_ = close + 1;
+      return;
+    }
+    double n = 0;
+    std::size_t p = pos_;
+    if (!lowering::read_decimal(s_, p, n)) {
+      // a label name without quotes (LBL NAME)
+      std::size_t start = pos_;
+      while (pos_ < s_.size() && s_[pos_] != ' ') ++pos_;
+      if (start == pos_) fail(start, "Label number or name missing");
+      out.label_is_name = true;
+      out.text = up(s_.substr(start, pos_ - start));
+      return;
+    }
+    out.label_number = n;
+    pos_ = p;
+  }
+  void assignment(HBlock& out) {
+    out.target = syntax_.variable(s_, pos_, out.exprs);
+    if (out.target == kNoExpr) fail(pos_, "Q parameter expected");
+    skip();
+    if (pos_ >= s_.size() || s_[pos_] != '=') fail(pos_, "'=' missing in Q parameter assignment");
+    ++pos_;
+    skip();
+    out.value = formula(out.exprs);
+    skip();
+    if (pos_ < s_.size()) fail(pos_, "Unexpected text after the formula");
+  }
+  // FN 0: Q1 = a   FN 1..4: Q1 = a op b   FN 9..12: IF a cmp b GOTO LBL n
+  void fn(HBlock& out) {
+    skip();
+    double number = 0;
+    std::size_t p = pos_;
+    if (!lowering::read_decimal(s_, p, number)) fail(pos_, "FN needs a function number");
+    pos_ = p;
+    skip();
+    if (pos_ < s_.size() && s_[pos_] == ':') ++pos_;
+    skip();
+    int fnum = static_cast<int>(number);
+    if (fnum >= 0 && fnum <= 4) {
+      out.kind = Kind::Assign;
+      out.target = syntax_.variable(s_, pos_, out.exprs);
+      if (out.target == kNoExpr) fail(pos_, "Q parameter expected");
+      skip();
+      if (pos_ >= s_.size() || s_[pos_] != '=') fail(pos_, "'=' missing in FN assignment");
+      ++pos_;
+      ExprRef a = value(out.exprs);
+      if (fnum == 0) {
+        out.value = a;
+        return;
+      }
+      skip();
+      static constexpr ExprOp kOps[] = {ExprOp::Plus, ExprOp::Minus, ExprOp::Times, ExprOp::Divide};
+      std::size_t at = pos_;
+      if (fnum == 4) {
+        if (!keyword("DIV")) fail(pos_, "FN 4 needs DIV");
+      } else {
+        if (pos_ >= s_.size()) fail(pos_, "Operator missing in FN");
+        ++pos_;
+      }
+      ExprRef b = value(out.exprs);
+      ExprNode node;
+      node.op = kOps[fnum - 1];
+      node.a = a;
+      node.b = b;
+      node.column = static_cast<std::uint32_t>(at + 1);
+      out.exprs.nodes.push_back(node);
+      out.value = static_cast<ExprRef>(out.exprs.nodes.size() - 1);
+      return;
+    }
+    if (fnum >= 9 && fnum <= 12) {
+      out.kind = Kind::FnJump;
+      if (!keyword("IF")) fail(pos_, "FN " + std::to_string(fnum) + " needs IF");
+      out.value = value(out.exprs);
+      skip();
+      static constexpr std::string_view kCmp[] = {"EQU", "NE", "GT", "LT"};
+      if (!keyword(kCmp[fnum - 9])) fail(pos_, "FN " + std::to_string(fnum) + " needs " + std::string(kCmp[fnum - 9]));
+      out.op = std::string(kCmp[fnum - 9]);
+      out.value2 = value(out.exprs);
+      skip();
+      if (!keyword("GOTO")) fail(pos_, "GOTO missing in FN jump");
+      skip();
+      if (!keyword("LBL")) fail(pos_, "LBL missing in FN jump");
+      label(out);
+      return;
+    }
+    fail(out.column - 1, "FN " + std::to_string(fnum) + " is not supported (FN 0-4 and FN 9-12 are)");
+  }
+  void words(HBlock& out) {
+    for (;;) {
+      skip();
+      if (pos_ >= s_.size()) return;
+      std::size_t start = pos_;
+      if (!lowering::is_alpha(s_[pos_])) fail(start, std::string("Unexpected character '") + s_[pos_] + "'");
+      std::string name;
+      while (pos_ < s_.size() && lowering::is_alpha(s_[pos_])) {
+        name.push_back(lowering::upper(s_[pos_++]));
+        // stop before a Q variable used as the value (X+Q1 is handled by the sign; XQ1 is not TNC)
+        if (name == "FMAX" || name == "FAUTO") break;
+      }
+      HWord w;
+      w.name = name;
+      w.column = static_cast<std::uint32_t>(start + 1);
+      if (pos_ < s_.size() && (s_[pos_] == '+' || s_[pos_] == '-')) {
+        std::size_t after = pos_ + 1;
+        if (after >= s_.size() || s_[after] == ' ' || s_[after] == '\t') {
+          w.sign = s_[pos_];
+          pos_ = after;
+          out.words.push_back(w);
+          continue;
+        }
+      }
+      if (pos_ < s_.size() && (lowering::is_digit(s_[pos_]) || s_[pos_] == '.' || s_[pos_] == '+' ||
+                               s_[pos_] == '-' || s_[pos_] == '(' || lowering::upper(s_[pos_]) == 'Q')) {
+        w.value = value(out.exprs);
+      }
+      out.words.push_back(w);
+    }
+  }
+
+  lowering::ExpressionSyntax syntax_;
+  std::string_view s_;
+  std::size_t pos_ = 0;
+  std::uint32_t line_ = 0;
+  const std::string* file_ = nullptr;
+};
+
+struct CornerPlan {
+  bool active = false;
+  bool chamfer = false;
+  Point3 t1, t2, centre;
+  bool ccw = false;
+};
+
+class Runner {
+ public:
+  Runner(const Options& options, canonical::Sink& sink)
+      : options_(options), table_(lowering::load_dialect_table("heidenhain")), m_(options, sink) {}
+  void run(ProgramText program);
+
+ private:
+  struct Call {
+    std::size_t return_pc;
+    std::size_t start_pc;
+    int remaining;
+  };
+  bool step();
+  double eval(const HBlock& b, ExprRef ref) { return evaluate(b.exprs, ref, m_.parameters(), m_.file_name()); }
+  const HWord* find(const HBlock& b, std::string_view name) const {
+    for (const HWord& w : b.words) if (w.name == name) return &w;
+    return nullptr;
+  }
+  double feed(double f) const {
+    return options_.heidenhain_feed_units == Options::FeedUnits::PerSecond ? f * 60.0 : f;
+  }
+  std::size_t find_label(const HBlock& b);
+  bool tool_call(const HBlock& b);
+  bool path(const HBlock& b, std::size_t index);
+  void cycle_def(const HBlock& b);
+  void cycle_call(std::uint32_t column);
+  void split_m(const HBlock& b, NeutralBlock& before, NeutralBlock& after);
+  void add_feed(NeutralBlock& nb, std::uint32_t column);
+  void plan_corner(const HBlock& rnd, const Point3& start, const Point3& corner, const Point3& next);
+
+  const Options& options_;
+  lowering::DialectTable table_;
+  DialectMachine m_;
+  Reader reader_;
+  ProgramText program_;
+  std::size_t pc_ = 0;
+  std::vector<Call> calls_;
+  std::map<std::string, std::size_t> labels_;
+
+  double feed_ = 0;              // the last programmed F (control units)
+  double pole_x_ = 0, pole_y_ = 0;
+  bool have_pole_ = false;
+  Point3 tangent_{1, 0, 0};      // direction at the end of the last path element
+  bool have_tangent_ = false;
+  CornerPlan corner_;
+  bool cycle_on_every_move_ = false;  // M89
+  std::string cycle_;            // the defined cycle number
+  std::map<std::string, double> cycle_values_;
+  std::uint64_t steps_ = 0;
+};
+
+void Runner::run(ProgramText program) {
+  program_ = std::move(program);
+  m_.announce_file(0, program_.name);
+  // labels: LBL n / LBL "name"
+  HBlock b;
+  for (std::size_t i = 0; i < program_.size(); ++i) {
+    std::string_view l = program_.line(i);
+    if (up(l).find("LBL") == std::string::npos || up(l).find("CALL") != std::string::npos) continue;
+    reader_.read(l, static_cast<std::uint32_t>(i + 1), program_.name, b);
+    if (b.kind != Kind::Label) continue;
+    std::string key = b.label_is_name ? b.text : std::to_string(std::lround(b.label_number));
+    if (key != "0") labels_.emplace(key, i);
+  }
+  m_.at(0, program_.name, 0);
+  m_.start();
+  while (step()) {
+  }
+}
+
+bool Runner::step() {
+  if (pc_ >= program_.size()) {
+    m_.at(0, program_.name, static_cast<std::uint32_t>(program_.size()));
+    if (options_.require_program_end) m_.fail(1, "File ended without END PGM");
+    return false;
+  }
+  if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
+  std::size_t index = pc_++;
+  HBlock b;
+  reader_.read(program_.line(index), static_cast<std::uint32_t>(index + 1), program_.name, b);
+  m_.at(0, program_.name, static_cast<std::uint32_t>(index + 1), b.n);
+  switch (b.kind) {
+    case Kind::Empty:
+    case Kind::BlkForm:
+      return true;
+    case Kind::Comment: {
+      NeutralBlock nb;
+      nb.comment = b.text;
+      nb.has_comment = true;
+      m_.execute(nb);
+      return true;
+    }
+    case Kind::BeginPgm: {
+      NeutralBlock nb;
+      if (b.text.find("INCH") != std::string::npos) nb.g(20, b.column);
+      else nb.g(21, b.column);
+      m_.execute(nb);
+      return true;
+    }
+    case Kind::EndPgm: {
+      if (!calls_.empty()) m_.fail(b.column, "END PGM inside a called label (LBL 0 missing)");
+      NeutralBlock nb;
+      nb.m(30, b.column);
+      m_.execute(nb);
+      return false;
+    }
+    case Kind::ToolCall:
+    case Kind::ToolDef:
+      return tool_call(b);
+    case Kind::CyclDef:
+      cycle_def(b);
+      return true;
+    case Kind::CyclCall: {
+      NeutralBlock before, after;
+      split_m(b, before, after);
+      if (m_.execute(before)) return false;
+      if (b.keyword == "POS") {
+        NeutralBlock nb;
+        const HWord* fmax = find(b, "FMAX");
+        nb.g(fmax ? 0 : 1, b.column);
+        if (!fmax) {
+          if (const HWord* f = find(b, "F")) feed_ = eval(b, f->value);
+          add_feed(nb, b.column);
+        }
+        std::optional<double> x, y, z;
+        Point3 here = m_.position();
+        for (const HWord& w : b.words) {
+          if (w.value == kNoExpr) continue;
+          double v = eval(b, w.value);
+          if (w.name == "X") x = v; else if (w.name == "Y") y = v; else if (w.name == "Z") z = v;
+          else if (w.name == "IX") x = here.x + v; else if (w.name == "IY") y = here.y + v; else if (w.name == "IZ") z = here.z + v;
+        }
+        m_.put_axes(nb, x, y, z, b.column);
+        if (m_.execute(nb)) return false;
+      }
+      cycle_call(b.column);
+      return !m_.execute(after);
+    }
+    case Kind::Label: {
+      bool end = !b.label_is_name && b.label_number == 0;
+      if (end) {
+        if (calls_.empty()) return true;  // LBL 0 reached in the main flow: nothing to return from
+        Call& c = calls_.back();
+        if (c.remaining > 0) {
+          --c.remaining;
+          pc_ = c.start_pc;
+        } else {
+          pc_ = c.return_pc;
+          calls_.pop_back();
+        }
+      }
+      return true;
+    }
+    case Kind::CallLabel: {
+      std::size_t target = find_label(b);
+      int repeats = 0;
+      if (const HWord* rep = find(b, "REP")) repeats = static_cast<int>(std::lround(eval(b, rep->value)));
+      if (calls_.size() >= 32) m_.fail(b.column, "Too many nested label calls");
+      calls_.push_back(Call{pc_, target + 1, repeats});
+      pc_ = target + 1;
+      return true;
+    }
+    case Kind::CallPgm:
+      m_.fail(b.column, "CALL PGM (another program file) is not supported yet");
+    case Kind::Assign: {
+      const ExprNode& t = b.exprs.nodes[b.target];
+      m_.parameters().set_named(b.exprs.name(t.name_begin, t.name_length), eval(b, b.value));
+      return true;
+    }
+    case Kind::FnJump: {
+      double a = eval(b, b.value), c = eval(b, b.value2);
+      bool taken = b.op == "EQU" ? a == c : b.op == "NE" ? a != c : b.op == "GT" ? a > c : a < c;
+      if (taken) pc_ = find_label(b) + 1;
+      return true;
+    }
+    case Kind::Stop: {
+      NeutralBlock before, after;
+      split_m(b, before, after);
+      before.m(0, b.column);
+      if (m_.execute(before)) return false;
+      return !m_.execute(after);
+    }
+    case Kind::Path:
+      return path(b, index);
+  }
+  return true;
+}
+
+std::size_t Runner::find_label(const HBlock& b) {
+  std::string key = b.label_is_name ? b.text : std::to_string(std::lround(b.label_number));
+  auto it = labels_.find(key);
+  if (it == labels_.end()) m_.fail(b.column, "LBL " + key + " not found");
+  return it->second;
+}
+
+// M functions that act at the start of a block go before its motion; the others after it.
+void Runner::split_m(const HBlock& b, NeutralBlock& before, NeutralBlock& after) {
+  for (const HWord& w : b.words) {
+    if (w.name != "M" || w.value == kNoExpr) continue;
+    double code = eval(b, w.value);
+    const lowering::CodeEntry* e = table_.m(code);
+    if (e == nullptr) m_.fail(w.column, "M" + lowering::code_key(code) + " is not a Heidenhain M function ncbridge supports");
+    if (e->meta == "spindle_cw_coolant" || e->meta == "spindle_ccw_coolant") {
+      before.m(e->meta == "spindle_cw_coolant" ? 3 : 4, w.column);
+      before.m(8, w.column);
+    } else if (e->meta == "cycle_call_block") {
+      // M99: handled by the path block (after its motion)
+    } else if (e->meta == "cycle_call_modal") {
+      cycle_on_every_move_ = true;
+    } else if (e->meta == "spindle_cw" || e->meta == "spindle_ccw" || e->meta == "coolant_flood") {
+      before.m(static_cast<int>(*e->rs274), w.column);
+    } else if (e->rs274) {
+      after.m(static_cast<int>(*e->rs274), w.column);
+    }
+  }
+}
+
+void Runner::add_feed(NeutralBlock& nb, std::uint32_t column) {
+  double f = feed(feed_);
+  if (f <= 0) m_.fail(column, "Feed move with no feed rate programmed");
+  if (std::fabs(m_.state().feed_rate - f) > 1e-9) nb.add('f', f, column);
+}
+
+bool Runner::tool_call(const HBlock& b) {
+  NeutralBlock nb;
+  int tool = 0;
+  if (!b.tool_name.empty()) {
+    tool = m_.tool_number_for_name(b.tool_name, b.column);
+  } else if (const HWord* t = find(b, "T")) {
+    tool = static_cast<int>(std::lround(eval(b, t->value)));
+  } else if (b.kind == Kind::ToolCall) {
+    tool = m_.state().tool_in_spindle;  // TOOL CALL Z S..: new data for the tool in the spindle
+  }
+  if (b.kind == Kind::ToolDef) {
+    nb.add('t', tool, b.column);
+    return !m_.execute(nb);
+  }
+  if (b.text == "X" && m_.state().plane != canonical::Plane::YZ) nb.g(19, b.column);
+  if (b.text == "Y" && m_.state().plane != canonical::Plane::XZ) nb.g(18, b.column);
+  if (b.text == "Z" && m_.state().plane != canonical::Plane::XY) nb.g(17, b.column);
+  if (tool != m_.state().tool_in_spindle || find(b, "T") || !b.tool_name.empty()) {
+    nb.add('t', tool, b.column);
+    nb.m(6, b.column);
+    nb.g(43, b.column);
+    nb.add('h', tool, b.column);
+  }
+  for (const HWord& w : b.words) {
+    if (w.name == "S") nb.add('s', eval(b, w.value), w.column);
+    else if (w.name == "F") feed_ = eval(b, w.value);
+    else if ((w.name == "DL" || w.name == "DR") && w.value != kNoExpr && eval(b, w.value) != 0.0) {
+      m_.fail(w.column, w.name + " (tool oversize) is not supported yet");
+    }
+  }
+  return !m_.execute(nb);
+}
+
+void Runner::plan_corner(const HBlock& rnd, const Point3& start, const Point3& corner, const Point3& next) {
+  double ux = corner.x - start.x, uy = corner.y - start.y;
+  double vx = next.x - corner.x, vy = next.y - corner.y;
+  double lu = std::hypot(ux, uy), lv = std::hypot(vx, vy);
+  if (lu < 1e-9 || lv < 1e-9) m_.fail(rnd.column, rnd.keyword + " between elements of zero length");
+  ux /= lu; uy /= lu; vx /= lv; vy /= lv;
+  double cross = ux * vy - uy * vx, dot = ux * vx + uy * vy;
+  if (std::fabs(cross) < 1e-9) m_.fail(rnd.column, rnd.keyword + " at a corner without a change of direction");
+  const HWord* r = find(rnd, rnd.keyword == "RND" ? "R" : "");
+  double size = 0;
+  if (rnd.keyword == "RND") {
+    if (!r || r->value == kNoExpr) m_.fail(rnd.column, "RND needs R");
+    size = eval(rnd, r->value);
+  } else {
+    // CHF 5: the length is the block's first value
+    for (const HWord& w : rnd.words) {
+      if (w.value != kNoExpr && w.name.empty()) size = eval(rnd, w.value);
+    }
+    if (size == 0 && !rnd.words.empty() && rnd.words.front().value != kNoExpr) size = eval(rnd, rnd.words.front().value);
+  }
+  if (size <= 0) m_.fail(rnd.column, rnd.keyword + " size must be positive");
+  corner_ = CornerPlan{};
+  corner_.active = true;
+  corner_.chamfer = rnd.keyword == "CHF";
+  double along = size;
+  if (!corner_.chamfer) {
+    double turn = std::acos(std::clamp(dot, -1.0, 1.0));
+    along = size * std::tan(turn / 2.0);
+  }
+  if (along > lu + 1e-9 || along > lv + 1e-9) m_.fail(rnd.column, rnd.keyword + " too large for the elements it joins");
+  corner_.t1 = {corner.x - ux * along, corner.y - uy * along, corner.z};
+  corner_.t2 = {corner.x + vx * along, corner.y + vy * along, corner.z};
+  corner_.ccw = cross > 0;
+  double nx = corner_.ccw ? -uy : uy, ny = corner_.ccw ? ux : -ux;
+  corner_.centre = {corner_.t1.x + nx * size, corner_.t1.y + ny * size, corner.z};
+}
+
+bool Runner::path(const HBlock& b, std::size_t index) {
+  const std::string& k = b.keyword;
+  Point3 here = m_.position();
+  std::optional<double> x, y, z;
+  bool rapid = false, cw = false, dr = false;
+  std::optional<double> radius, pa, ipa, pr;
+  bool comp_given = false;
+  int comp = 40;
+  bool m99 = false;
+  for (const HWord& w : b.words) {
+    const std::string& n = w.name;
+    if (n == "FMAX") { rapid = true; continue; }
+    if (n == "FAUTO") continue;
+    if (n == "F" && w.value == kNoExpr) continue;  // F AUTO / F MAX spelled apart
+    if (n == "DR") {
+      dr = true;
+      cw = w.sign == '-' || (w.value != kNoExpr && eval(b, w.value) < 0);
+      continue;
+    }
+    if (n == "RL" || n == "RR") { comp_given = true; comp = n == "RL" ? 41 : 42; continue; }
+    if (n == "M") {
+      if (w.value != kNoExpr) {
+        double code = eval(b, w.value);
+        if (code == 99) m99 = true;
+      }
+      continue;
+    }
+    if (w.value == kNoExpr) {
+      if (n == "R" || n == "X" || n == "Y" || n == "Z") m_.fail(w.column, n + " has no value");
+      m_.fail(w.column, "Unknown word " + n);
+    }
+    double v = eval(b, w.value);
+    if (n == "X") x = v;
+    else if (n == "Y") y = v;
+    else if (n == "Z") z = v;
+    else if (n == "IX") x = here.x + v;
+    else if (n == "IY") y = here.y + v;
+    else if (n == "IZ") z = here.z + v;
+    else if (n == "F") feed_ = v;
+    else if (n == "R") {
+      if (k == "CR" && !radius) radius = v;
+      else if (k == "RND") radius = v;
+      else if (v == 0) { comp_given = true; comp = 40; }
+      else m_.fail(w.column, "R" + std::to_string(v) + ": radius compensation is R0, RL or RR");
+    }
+    else if (n == "PA") pa = v;
+    else if (n == "IPA") ipa = v;
+    else if (n == "PR") pr = v;
+    else if (n == "IPR") pr = v;  // incremental polar radius: relative to the current radius
+    else if (n == "S") continue;
+    else if (k == "CHF" && n.empty()) radius = v;
+    else m_.fail(w.column, "Word " + n + " is not supported in an " + k + " block");
+  }
+  NeutralBlock before, after;
+  split_m(b, before, after);
+  if (comp_given && (comp != 40 || m_.state().comp_side != canonical::Side::Off)) before.g(comp, b.column);
+  if (k == "CC") {
+    pole_x_ = x.value_or(here.x);
+    pole_y_ = y.value_or(here.y);
+    have_pole_ = true;
+    return !m_.execute(before) && !m_.execute(after);
+  }
+  if (k == "RND" || k == "CHF") {
+    if (!corner_.active) m_.fail(b.column, k + " must follow a straight or circular path block and precede another");
+    NeutralBlock nb = before;
+    add_feed(nb, b.column);
+    if (corner_.chamfer) {
+      nb.g(1, b.column);
+      m_.put_axes(nb, corner_.t2.x, corner_.t2.y, std::nullopt, b.column);
+    } else {
+      m_.put_xy_arc(nb, !corner_.ccw, corner_.t2.x, corner_.t2.y, std::nullopt, corner_.centre.x, corner_.centre.y, b.column);
+    }
+    corner_.active = false;
+    if (m_.execute(nb)) return false;
+    return !m_.execute(after);
+  }
+
+  Point3 end{x.value_or(here.x), y.value_or(here.y), z.value_or(here.z)};
+  NeutralBlock nb = before;
+  bool arc = false;
+  double cx = 0, cy = 0;
+  if (k == "L" || k == "LP") {
+    if (k == "LP") {
+      if (!have_pole_) m_.fail(b.column, "LP without a pole: program CC first");
+      double r0 = std::hypot(here.x - pole_x_, here.y - pole_y_);
+      double a0 = std::atan2(here.y - pole_y_, here.x - pole_x_) / kDeg;
+      double r = pr.value_or(r0);
+      double a = pa.value_or(a0) + ipa.value_or(0.0);
+      end.x = pole_x_ + r * std::cos(a * kDeg);
+      end.y = pole_y_ + r * std::sin(a * kDeg);
+      x = end.x;
+      y = end.y;
+    }
+  } else if (k == "C" || k == "CP") {
+    if (!have_pole_) m_.fail(b.column, k + " without a circle centre: program CC first");
+    if (!dr) m_.fail(b.column, k + " needs the direction DR+ or DR-");
+    arc = true;
+    cx = pole_x_;
+    cy = pole_y_;
+    if (k == "CP") {
+      double r0 = std::hypot(here.x - cx, here.y - cy);
+      double a0 = std::atan2(here.y - cy, here.x - cx) / kDeg;
+      double a = pa ? *pa : a0 + ipa.value_or(0.0);
+      end.x = cx + r0 * std::cos(a * kDeg);
+      end.y = cy + r0 * std::sin(a * kDeg);
+      x = end.x;
+      y = end.y;
+      if (ipa && std::fabs(*ipa) >= 360.0 - 1e-9) {
+        // a helix of whole turns: the executor takes the extra turns as P
+        int turns = static_cast<int>(std::floor(std::fabs(*ipa) / 360.0 + 1e-9));
+        if (std::fabs(std::fmod(std::fabs(*ipa), 360.0)) < 1e-9) nb.add('p', turns, b.column);
+        else nb.add('p', turns + 1, b.column);
+      }
+    }
+  } else if (k == "CR") {
+    if (!radius) m_.fail(b.column, "CR needs R (the radius)");
+    if (!dr) m_.fail(b.column, "CR needs the direction DR+ or DR-");
+    double r = std::fabs(*radius);
+    double dx = end.x - here.x, dy = end.y - here.y;
+    double chord = std::hypot(dx, dy);
+    if (chord < 1e-9) m_.fail(b.column, "CR to its own start point");
+    if (chord > 2 * r + 1e-6) m_.fail(b.column, "CR radius too small to reach the end point");
+    double h = std::sqrt(std::max(0.0, r * r - chord * chord / 4));
+    double mx = (here.x + end.x) / 2, my = (here.y + end.y) / 2;
+    // R+ : the shorter arc (< 180 degrees); R- : the longer. The centre lies right of the chord
+    // for a short clockwise arc.
+    bool right = (cw == (*radius > 0));
+    double nx = dy / chord, ny = -dx / chord;  // right-hand normal of the chord
+    if (!right) { nx = -nx; ny = -ny; }
+    cx = mx + nx * h;
+    cy = my + ny * h;
+    arc = true;
+    pole_x_ = cx;  // the control takes a CR's centre as the new pole
+    pole_y_ = cy;
+  } else if (k == "CT") {
+    if (!have_tangent_) m_.fail(b.column, "CT needs a preceding contour element to be tangent to");
+    double dx = end.x - here.x, dy = end.y - here.y;
+    double nx = -tangent_.y, ny = tangent_.x;  // left normal of the incoming direction
+    double nd = nx * dx + ny * dy;
+    if (std::fabs(nd) > 1e-9) {  // else the end lies on the tangent: a straight line
+      double kk = (dx * dx + dy * dy) / (2 * nd);
+      cx = here.x + nx * kk;
+      cy = here.y + ny * kk;
+      cw = kk < 0;
+      arc = true;
+    }
+  }
+
+  // A RND/CHF after this block shortens it to the corner's first tangent point.
+  Point3 final_end = end;
+  {
+    std::size_t j = index + 1;
+    HBlock nb2;
+    while (j < program_.size()) {
+      reader_.read(program_.line(j), static_cast<std::uint32_t>(j + 1), program_.name, nb2);
+      if (nb2.kind != Kind::Empty && nb2.kind != Kind::Comment) break;
+      ++j;
+    }
+    if (j < program_.size() && nb2.kind == Kind::Path && (nb2.keyword == "RND" || nb2.keyword == "CHF")) {
+      if (arc) m_.fail(nb2.column, nb2.keyword + " after a circular block is not supported yet");
+      // the element after the corner
+      std::size_t j2 = j + 1;
+      HBlock after_block;
+      while (j2 < program_.size()) {
+        reader_.read(program_.line(j2), static_cast<std::uint32_t>(j2 + 1), program_.name, after_block);
+        if (after_block.kind != Kind::Empty && after_block.kind != Kind::Comment) break;
+        ++j2;
+      }
+      if (j2 >= program_.size() || after_block.kind != Kind::Path || after_block.keyword != "L") {
+        m_.fail(nb2.column, nb2.keyword + " must be followed by a straight L block here");
+      }
+      Point3 next = end;
+      for (const HWord& w : after_block.words) {
+        if (w.value == kNoExpr) continue;
+        double v = evaluate(after_block.exprs, w.value, m_.parameters(), m_.file_name());
+        if (w.name == "X") next.x = v; else if (w.name == "Y") next.y = v;
+        else if (w.name == "IX") next.x = end.x + v; else if (w.name == "IY") next.y = end.y + v;
+      }
+      plan_corner(nb2, here, end, next);
+      final_end = corner_.t1;
+      x = final_end.x;
+      y = final_end.y;
+    }
+  }
+
+  if (rapid) {
+    nb.g(0, b.column);
+    m_.put_axes(nb, x, y, z, b.column);
+  } else {
+    add_feed(nb, b.column);
+    if (arc) {
+      m_.put_xy_arc(nb, cw, final_end.x, final_end.y, z, cx, cy, b.column);
+    } else {
+      nb.g(1, b.column);
+      m_.put_axes(nb, x, y, z, b.column);
+    }
+  }
+  if (arc) {
+    // tangent at the end of the arc: perpendicular to the radius, in the direction of travel
+    double rx = final_end.x - cx, ry = final_end.y - cy;
+    double l = std::hypot(rx, ry);
+    if (l > 0) tangent_ = cw ? Point3{ry / l, -rx / l, 0} : Point3{-ry / l, rx / l, 0};
+    have_tangent_ = true;
+  } else {
+    double dx = final_end.x - here.x, dy = final_end.y - here.y;
+    double l = std::hypot(dx, dy);
+    if (l > 1e-12) {
+      tangent_ = {dx / l, dy / l, 0};
+      have_tangent_ = true;
+    }
+  }
+  if (m_.execute(nb)) return false;
+  if (m99 || (cycle_on_every_move_ && (x || y))) cycle_call(b.column);
+  return !m_.execute(after);
+}
+
+void Runner::cycle_def(const HBlock& b) {
+  const std::string& number = b.keyword;
+  std::size_t dot = number.find('.');
+  std::string cycle = dot == std::string::npos ? number : number.substr(0, dot);
+  std::string sub = dot == std::string::npos ? "" : number;
+  if (cycle == "7" || cycle == "10") {
+    // coordinate transformation cycles act at once: 7 DATUM SHIFT, 10 ROTATION
+    if (sub.empty() || sub == cycle + ".0") return;
+    std::string text = b.text;
+    auto value_after = [&](std::string_view key, double& v) {
+      std::size_t p = text.find(key);
+      if (p == std::string::npos) return false;
+      p += key.size();
+      while (p < text.size() && text[p] == ' ') ++p;
+      return lowering::read_decimal(text, p, v);
+    };
+    double v = 0;
+    if (cycle == "10") {
+      if (!value_after("ROT", v)) m_.fail(b.column, "CYCL DEF 10.1 needs ROT");
+      // the rotation turns about the current datum
+      m_.frame.rotation_deg = v;
+    } else {
+      if (value_after("IX", v)) m_.frame.shift_within({v, 0, 0});
+      else if (value_after("X", v)) m_.frame.offset.x = v;
+      if (value_after("IY", v)) m_.frame.shift_within({0, v, 0});
+      else if (value_after("Y", v)) m_.frame.offset.y = v;
+      if (value_after("IZ", v)) m_.frame.offset.z += v;
+      else if (value_after("Z", v)) m_.frame.offset.z = v;
+    }
+    return;
+  }
+  auto it = table_.cycles.find(cycle);
+  if (it == table_.cycles.end()) m_.fail(b.column, "CYCL DEF " + cycle + " is not a cycle ncbridge supports");
+  if (sub.empty() || sub == cycle + ".0") {
+    cycle_ = cycle;
+    cycle_values_.clear();
+    return;
+  }
+  // old-style cycle lines: "1.1 SET UP -2", "1.2 DEPTH -20", "1.5 F100" (any language)
+  auto role = it->second.roles.find(sub);
+  if (role == it->second.roles.end()) m_.fail(b.column, "CYCL DEF " + sub + " is not a line of cycle " + cycle);
+  const std::string& text = b.text;
+  std::size_t p = 0;
+  while (p < text.size() && !(lowering::is_digit(text[p]) || text[p] == '-' || text[p] == '+' || text[p] == '.')) ++p;
+  double v = 0;
+  if (!lowering::read_decimal(text, p, v)) m_.fail(b.column, "CYCL DEF " + sub + " has no value");
+  cycle_values_[role->second] = v;
+}
+
+void Runner::cycle_call(std::uint32_t column) {
+  if (cycle_.empty()) m_.fail(column, "Cycle call with no cycle defined");
+  const lowering::CycleEntry& entry = table_.cycles.at(cycle_);
+  std::map<std::string, double> v = cycle_values_;
+  if (cycle_ != "1") {
+    for (const auto& [q, role] : entry.roles) {
+      std::string name = "_q" + q.substr(1);
+      auto value = m_.parameters().named(name);
+      if (!value) m_.fail(column, "Cycle " + cycle_ + " parameter " + q + " (" + role + ") is not set");
+      v[role] = *value;
+    }
+  }
+  auto get = [&](const char* role) -> double {
+    auto it = v.find(role);
+    if (it == v.end()) m_.fail(column, "Cycle " + cycle_ + ": " + role + " is not set");
+    return it->second;
+  };
+  Point3 here = m_.position();
+  NeutralBlock nb;
+  double r, bottom, clearance;
+  int code = 81;
+  double peck = 0, dwell = 0, feed_rate = 0;
+  if (cycle_ == "1") {
+    double setup = get("setup_clearance"), depth = get("depth");
+    // the tool starts at the set-up clearance above the surface; the cycle works towards -Z
+    r = here.z;
+    bottom = here.z - std::fabs(setup) - std::fabs(depth);
+    peck = v.count("plunge_depth") ? std::fabs(v["plunge_depth"]) : 0.0;
+    dwell = v.count("dwell_bottom") ? v["dwell_bottom"] : 0.0;
+    feed_rate = get("plunge_feed");
+    clearance = r;
+    if (peck > 0 && peck < std::fabs(r - bottom) - 1e-9) code = 83;
+    else if (dwell > 0) code = 82;
+    nb.g(98, column);
+  } else {
+    double surface = get("surface"), setup = std::fabs(get("setup_clearance"));
+    double depth = get("depth");
+    double second = v.count("second_setup_clearance") ? std::fabs(v["second_setup_clearance"]) : 0.0;
+    r = surface + setup;
+    bottom = surface - std::fabs(depth);
+    clearance = surface + std::max(setup, second);
+    feed_rate = v.count("plunge_feed") ? v["plunge_feed"] : feed_;
+    dwell = v.count("dwell_bottom") ? v["dwell_bottom"] : 0.0;
+    double plunge = v.count("plunge_depth") ? std::fabs(v["plunge_depth"]) : 0.0;
+    if (cycle_ == "200" || cycle_ == "203" || cycle_ == "205") {
+      if (plunge > 0 && plunge < std::fabs(depth) - 1e-9) {
+        peck = plunge;
+        code = (cycle_ == "203" && v.count("breaks") && v["breaks"] > 0) ? 73 : 83;
+      } else {
+        code = dwell > 0 ? 82 : 81;
+      }
+      if (v.count("decrement") && v["decrement"] != 0) {
+        m_.comment("ncbridge: cycle " + cycle_ + " decrement Q212 is not applied (equal pecks used)");
+      }
+    } else if (cycle_ == "201") {
+      code = dwell > 0 ? 89 : 85;
+    } else if (cycle_ == "207") {
+      code = 84;
+      double pitch = get("pitch");
+      feed_rate = std::fabs(pitch) * m_.state().speed;
+      if (feed_rate <= 0) m_.fail(column, "Cycle 207 needs a spindle speed to feed the pitch");
+      if (pitch < 0) m_.fail(column, "Cycle 207 with a negative pitch (left-hand thread) is not supported yet");
+    } else {
+      m_.fail(column, "Cycle " + cycle_ + " (" + entry.name + ") is read but its motion is not supported yet");
+    }
+    if (clearance > here.z + 1e-9) {
+      NeutralBlock up;
+      up.g(0, column);
+      m_.put_axes(up, std::nullopt, std::nullopt, clearance, column);
+      if (m_.execute(up)) return;
+    }
+    nb.g(second > setup ? 98 : 99, column);
+  }
+  static_cast<void>(clearance);
+  double f = cycle_ == "207" ? feed_rate : feed(feed_rate);
+  if (f <= 0) m_.fail(column, "Cycle " + cycle_ + " has no feed rate");
+  nb.add('f', f, column);
+  nb.g(code, column);
+  Point3 e = m_.frame.to_executor({here.x, here.y, 0});
+  nb.add('x', e.x, column);
+  nb.add('y', e.y, column);
+  nb.add('z', bottom + m_.frame.offset.z, column);
+  nb.add('r', r + m_.frame.offset.z, column);
+  if (code == 83 || code == 73) nb.add('q', peck, column);
+  if (code == 82 || code == 89) nb.add('p', dwell, column);
+  m_.execute(nb);
+  // the control's feed for following blocks is the last programmed F, not the cycle's
+  NeutralBlock cancel;
+  cancel.g(80, column);
+  m_.execute(cancel);
+}
+
+}  // namespace
+
+void run(ProgramText program, const Options& options, canonical::Sink& sink) {
+  Runner runner(options, sink);
+  runner.run(std::move(program));
+}
+
+}  // namespace ncbridge::interpreter::heidenhain

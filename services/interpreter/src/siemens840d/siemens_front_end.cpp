@@ -1,0 +1,885 @@
+// SINUMERIK 840D: each block is read into items (address words with expression values, calls
+// with argument lists, assignments, keywords), evaluated, then lowered onto neutral blocks.
+#include "siemens840d/siemens_front_end.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <set>
+
+#include "block_model.hpp"
+#include "expression.hpp"
+#include "lowering/dialect_machine.hpp"
+#include "lowering/dialect_table.hpp"
+#include "lowering/infix_expression.hpp"
+#include "ncbridge/common/error.hpp"
+
+namespace ncbridge::interpreter::siemens840d {
+
+using lowering::DialectMachine;
+using lowering::InfixParser;
+using lowering::NeutralBlock;
+using lowering::Point3;
+using lowering::ProgramText;
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+struct Item {
+  enum class Kind { Word, Assign, Call, Keyword } kind = Kind::Word;
+  std::string name;                 // upper case: X, CR, I1, G, M, R12, _X_HOME, CYCLE81, TRANS, GOTOF
+  ExprRef value = kNoExpr;          // Word/Assign value
+  char mode = 0;                    // 'A' for =AC(..), 'I' for =IC(..)
+  std::vector<ExprRef> arguments;   // Call: kNoExpr for an empty argument
+  std::string text;                 // Keyword operand (label), string argument (MSG, T="name")
+  std::uint32_t column = 0;
+};
+
+struct SBlock {
+  Block exprs;
+  std::vector<Item> items;
+  std::string comment;
+  bool has_comment = false;
+  std::int64_t n = -1;
+  std::string label;                // LABEL: at the start
+  // control: IF cond GOTOF label / GOTOF label
+  ExprRef condition = kNoExpr;
+};
+
+std::string up(std::string_view s) {
+  std::string r(s);
+  for (char& c : r) c = lowering::upper(c);
+  return r;
+}
+bool ident_char(char c) { return lowering::is_alpha(c) || lowering::is_digit(c) || c == '_' || c == '$'; }
+
+class Reader {
+ public:
+  explicit Reader(const std::set<std::string>& variables) : variables_(variables) {
+    syntax_.open = '(';
+    syntax_.close = ')';
+    syntax_.word_comparisons = false;
+    syntax_.symbol_comparisons = true;
+    syntax_.variable = [this](std::string_view s, std::size_t& pos, Block& b) -> ExprRef {
+      std::size_t p = pos;
+      if (p >= s.size() || !(lowering::is_alpha(s[p]) || s[p] == '_' || s[p] == '$')) return kNoExpr;
+      std::string name;
+      while (p < s.size() && ident_char(s[p])) name.push_back(lowering::upper(s[p++]));
+      std::string key;
+      if (name.size() > 1 && name[0] == 'R' && std::all_of(name.begin() + 1, name.end(), lowering::is_digit)) {
+        key = "_r" + name.substr(1);
+      } else if (variables_.count(name)) {
+        key = variable_key(name);
+      } else {
+        return kNoExpr;
+      }
+      ExprNode node;
+      node.op = ExprOp::NamedParameter;
+      node.column = static_cast<std::uint32_t>(pos + 1);
+      node.name_begin = static_cast<std::uint32_t>(b.names.size());
+      node.name_length = static_cast<std::uint32_t>(key.size());
+      b.names += key;
+      b.nodes.push_back(node);
+      pos = p;
+      return static_cast<ExprRef>(b.nodes.size() - 1);
+    };
+  }
+
+  static std::string variable_key(const std::string& name) {
+    std::string key = "_v_";
+    for (char c : name) key.push_back((c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c);
+    return key;
+  }
+
+  void read(std::string_view s, std::uint32_t line, const std::string& file, SBlock& out) {
+    s_ = s;
+    pos_ = 0;
+    line_ = line;
+    file_ = &file;
+    out = SBlock{};
+    out.exprs.line = line;
+    skip();
+    if (pos_ < s_.size() && s_[pos_] == '/') {
+      ++pos_;
+      skip();
+    }
+    if (pos_ + 1 < s_.size() && lowering::upper(s_[pos_]) == 'N' && lowering::is_digit(s_[pos_ + 1])) {
+      ++pos_;
+      std::int64_t n = 0;
+      while (pos_ < s_.size() && lowering::is_digit(s_[pos_]) && n < 1000000000) n = n * 10 + (s_[pos_++] - '0');
+      out.n = n;
+      skip();
+    }
+    // LABEL:
+    {
+      std::size_t p = pos_;
+      while (p < s_.size() && ident_char(s_[p])) ++p;
+      if (p > pos_ && p < s_.size() && s_[p] == ':' && lowering::is_alpha(s_[pos_])) {
+        out.label = up(s_.substr(pos_, p - pos_));
+        pos_ = p + 1;
+      }
+    }
+    while (skip(), pos_ < s_.size()) item(out);
+  }
+
+ private:
+  [[noreturn]] void fail(std::size_t at, const std::string& message) const {
+    throw InputError({*file_, line_, static_cast<std::uint32_t>(at + 1)}, message);
+  }
+  void skip() {
+    while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t')) ++pos_;
+  }
+  ExprRef expression(Block& b) {
+    InfixParser parser(s_, pos_, b, syntax_, *file_, line_);
+    ExprRef r = parser.expression();
+    pos_ = parser.position();
+    return r;
+  }
+  // After '=': AC(expr), IC(expr) or an expression.
+  ExprRef word_value(Block& b, char& mode) {
+    skip();
+    mode = 0;
+    std::string_view rest = s_.substr(pos_);
+    if (rest.size() > 2 && (lowering::upper(rest[0]) == 'A' || lowering::upper(rest[0]) == 'I') &&
+        lowering::upper(rest[1]) == 'C' && (rest[2] == '(' || rest[2] == ' ')) {
+      std::size_t p = pos_ + 2;
+      while (p < s_.size() && s_[p] == ' ') ++p;
+      if (p < s_.size() && s_[p] == '(') {
+        mode = lowering::upper(rest[0]);
+        pos_ = p + 1;
+        ExprRef r = expression(b);
+        skip();
+        if (pos_ >= s_.size() || s_[pos_] != ')') fail(pos_, "')' missing after AC(/IC(");
+        ++pos_;
+        return r;
+      }
+    }
+    return expression(b);
+  }
+
+  void item(SBlock& out) {
+    std::size_t start = pos_;
+    char c = s_[pos_];
+    if (c == ';') {
+      out.comment = std::string(s_.substr(pos_ + 1));
+      out.has_comment = true;
+      pos_ = s_.size();
+      return;
+    }
+    if (!(lowering::is_alpha(c) || c == '_' || c == '$')) fail(start, std::string("Unexpected character '") + c + "'");
+    std::string name;
+    std::size_t p = pos_;
+    // an address letter followed by a number: X10, G1, M3, F250., I1.46, L10
+    if (lowering::is_alpha(c) && p + 1 < s_.size() &&
+        (lowering::is_digit(s_[p + 1]) || s_[p + 1] == '.' || s_[p + 1] == '-' || s_[p + 1] == '+')) {
+      // I1=.., J1=.., K1=.., R12=.. (names with digits and '=') are not plain words
+      std::size_t q = p + 1;
+      while (q < s_.size() && lowering::is_digit(s_[q])) ++q;
+      std::size_t r = q;
+      while (r < s_.size() && s_[r] == ' ') ++r;
+      bool assignment = q > p + 1 && r < s_.size() && s_[r] == '=' && (r + 1 >= s_.size() || s_[r + 1] != '=');
+      if (!assignment) {
+        Item it;
+        it.kind = Item::Kind::Word;
+        it.name = std::string(1, lowering::upper(c));
+        it.column = static_cast<std::uint32_t>(start + 1);
+        pos_ = p + 1;
+        double v = 0;
+        std::size_t vp = pos_;
+        if (!lowering::read_decimal(s_, vp, v)) fail(start, it.name + " has a bad number");
+        it.value = InfixParser::number(out.exprs, v, static_cast<std::uint32_t>(pos_ + 1));
+        pos_ = vp;
+        out.items.push_back(it);
+        return;
+      }
+    }
+    while (p < s_.size() && ident_char(s_[p])) name.push_back(lowering::upper(s_[p++]));
+    pos_ = p;
+    skip();
+    Item it;
+    it.name = name;
+    it.column = static_cast<std::uint32_t>(start + 1);
+    if (pos_ < s_.size() && s_[pos_] == '=' && (pos_ + 1 >= s_.size() || s_[pos_ + 1] != '=')) {
+      ++pos_;
+      skip();
+      if (name == "T" && pos_ < s_.size() && s_[pos_] == '"') {
+        std::size_t close = s_.find('"', pos_ + 1);
+        if (close == std::string_view::npos) fail(pos_, "Tool name not closed by '\"'");
+        it.kind = Item::Kind::Word;
+        it.text = std::string(s_.substr(pos_ + 1, close - pos_ - 1));
+        pos_ = close + 1;
+        out.items.push_back(it);
+        return;
+      }
+      bool variable = (name.size() > 1 && name[0] == 'R' && std::all_of(name.begin() + 1, name.end(), lowering::is_digit)) ||
+                      variables_.count(name) != 0;
+      it.kind = variable ? Item::Kind::Assign : Item::Kind::Word;
+      it.value = word_value(out.exprs, it.mode);
+      out.items.push_back(it);
+      return;
+    }
+    if (pos_ < s_.size() && s_[pos_] == '(') {
+      it.kind = Item::Kind::Call;
+      ++pos_;
+      for (;;) {
+        skip();
+        if (pos_ >= s_.size()) fail(start, "')' missing in call of " + name);
+        if (s_[pos_] == ')') {
+          ++pos_;
+          break;
+        }
+        if (s_[pos_] == ',') {
+          it.arguments.push_back(kNoExpr);
+          ++pos_;
+          continue;
+        }
+        if (s_[pos_] == '"') {
+          std::size_t close = s_.find('"', pos_ + 1);
+          if (close == std::string_view::npos) fail(pos_, "String not closed by '\"'");
+          it.text = std::string(s_.substr(pos_ + 1, close - pos_ - 1));
+          pos_ = close + 1;
+        } else {
+          it.arguments.push_back(expression(out.exprs));
+        }
+        skip();
+        if (pos_ < s_.size() && s_[pos_] == ',') {
+          ++pos_;
+          skip();
+          if (pos_ < s_.size() && s_[pos_] == ')') it.arguments.push_back(kNoExpr);
+          continue;
+        }
+        if (pos_ < s_.size() && s_[pos_] == ')') {
+          ++pos_;
+          break;
+        }
+        fail(pos_, "',' or ')' expected in the arguments of " + name);
+      }
+      out.items.push_back(it);
+      return;
+    }
+    it.kind = Item::Kind::Keyword;
+    if (name == "IF") {
+      out.condition = expression(out.exprs);
+      return;
+    }
+    if (name == "GOTOF" || name == "GOTOB" || name == "GOTO" || name == "GOTOC") {
+      skip();
+      std::size_t q = pos_;
+      while (q < s_.size() && ident_char(s_[q])) ++q;
+      if (q == pos_) fail(pos_, name + " needs a label");
+      it.text = up(s_.substr(pos_, q - pos_));
+      pos_ = q;
+    }
+    if (name == "DEF") {
+      // DEF REAL A, B=5, C: declares variables (values set by the runner)
+      skip();
+      std::size_t q = pos_;
+      while (q < s_.size() && ident_char(s_[q])) ++q;
+      it.text = up(s_.substr(pos_, q - pos_));  // the type
+      pos_ = q;
+      for (;;) {
+        skip();
+        std::size_t v = pos_;
+        while (v < s_.size() && ident_char(s_[v])) ++v;
+        if (v == pos_) fail(pos_, "Variable name expected in DEF");
+        Item var;
+        var.kind = Item::Kind::Assign;
+        var.name = up(s_.substr(pos_, v - pos_));
+        var.column = static_cast<std::uint32_t>(pos_ + 1);
+        declared_.insert(var.name);
+        pos_ = v;
+        skip();
+        if (pos_ < s_.size() && s_[pos_] == '=') {
+          ++pos_;
+          var.value = expression(out.exprs);
+          skip();
+        } else {
+          var.value = InfixParser::number(out.exprs, 0.0, var.column);
+        }
+        var.text = "DEF";
+        out.items.push_back(var);
+        if (pos_ < s_.size() && s_[pos_] == ',') {
+          ++pos_;
+          continue;
+        }
+        break;
+      }
+      return;
+    }
+    out.items.push_back(it);
+  }
+
+ public:
+  std::set<std::string> declared_;  // names a DEF of this block declared
+
+ private:
+  const std::set<std::string>& variables_;
+  lowering::ExpressionSyntax syntax_;
+  std::string_view s_;
+  std::size_t pos_ = 0;
+  std::uint32_t line_ = 0;
+  const std::string* file_ = nullptr;
+};
+
+struct File {
+  ProgramText text;
+  std::map<std::string, std::size_t> labels;
+};
+
+class Runner {
+ public:
+  Runner(const Options& options, canonical::Sink& sink)
+      : options_(options), table_(lowering::load_dialect_table("siemens840d")), m_(options, sink), reader_(variables_) {}
+  void run(ProgramText program);
+
+ private:
+  struct Call {
+    std::size_t file, return_pc, start_pc;
+    int remaining;
+  };
+  std::size_t add_file(ProgramText text);
+  bool step();
+  bool run_block(SBlock& b);
+  double eval(const SBlock& b, ExprRef ref) { return evaluate(b.exprs, ref, m_.parameters(), m_.file_name()); }
+  void jump(const std::string& label, const std::string& how, std::uint32_t column);
+  void call_subprogram(const std::string& name, int repeats, std::uint32_t column);
+  bool return_from_subprogram();
+  void cycle(const Item& call, const SBlock& b, bool modal_call);
+  void run_cycle_here(std::uint32_t column);
+
+  const Options& options_;
+  lowering::DialectTable table_;
+  DialectMachine m_;
+  std::set<std::string> variables_;
+  Reader reader_;
+  std::vector<File> files_;
+  std::size_t file_ = 0, pc_ = 0;
+  std::vector<Call> calls_;
+  std::uint64_t steps_ = 0;
+
+  bool incremental_ = false;
+  int motion_ = 0;  // 0, 1, 2, 3
+  int plane_ = 17;
+  Point3 tangent_{1, 0, 0};
+  bool have_tangent_ = false;
+  std::optional<std::string> modal_cycle_;  // MCALL
+  std::map<std::string, double> modal_cycle_args_;
+  std::string cycle_name_;
+  std::map<std::string, double> cycle_args_;
+};
+
+std::size_t Runner::add_file(ProgramText text) {
+  File f;
+  f.text = std::move(text);
+  for (std::size_t i = 0; i < f.text.size(); ++i) {
+    std::string_view l = f.text.line(i);
+    std::size_t colon = l.find(':');
+    if (colon == std::string_view::npos) continue;
+    std::size_t p = 0;
+    while (p < l.size() && (l[p] == ' ' || l[p] == '\t')) ++p;
+    if (p + 1 < l.size() && lowering::upper(l[p]) == 'N' && lowering::is_digit(l[p + 1])) {
+      ++p;
+      while (p < l.size() && lowering::is_digit(l[p])) ++p;
+      while (p < l.size() && l[p] == ' ') ++p;
+    }
+    std::size_t q = p;
+    while (q < l.size() && ident_char(l[q])) ++q;
+    if (q > p && q == colon && lowering::is_alpha(l[p])) f.labels.emplace(up(l.substr(p, q - p)), i);
+  }
+  files_.push_back(std::move(f));
+  std::size_t index = files_.size() - 1;
+  m_.announce_file(static_cast<std::uint32_t>(index), files_[index].text.name);
+  return index;
+}
+
+void Runner::run(ProgramText program) {
+  add_file(std::move(program));
+  m_.at(0, files_[0].text.name, 0);
+  m_.start();
+  while (step()) {
+  }
+}
+
+bool Runner::step() {
+  const File& f = files_[file_];
+  if (pc_ >= f.text.size()) {
+    m_.at(static_cast<std::uint32_t>(file_), f.text.name, static_cast<std::uint32_t>(f.text.size()));
+    if (!calls_.empty()) {
+      // a subprogram file may end without M17/RET
+      return return_from_subprogram();
+    }
+    if (options_.require_program_end) m_.fail(1, "File ended with no program end (M30/M2)");
+    return false;
+  }
+  if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
+  std::size_t index = pc_++;
+  SBlock b;
+  reader_.declared_.clear();
+  reader_.read(f.text.line(index), static_cast<std::uint32_t>(index + 1), f.text.name, b);
+  m_.at(static_cast<std::uint32_t>(file_), f.text.name, static_cast<std::uint32_t>(index + 1), b.n);
+  for (const std::string& name : reader_.declared_) variables_.insert(name);
+  return run_block(b);
+}
+
+void Runner::jump(const std::string& label, const std::string& how, std::uint32_t column) {
+  const File& f = files_[file_];
+  auto it = f.labels.find(label);
+  if (it == f.labels.end()) m_.fail(column, how + " " + label + ": no label " + label + ": in this program");
+  std::size_t here = pc_ - 1;
+  if (how == "GOTOF" && it->second <= here) m_.fail(column, "GOTOF " + label + ": the label is not after this block");
+  if (how == "GOTOB" && it->second >= here) m_.fail(column, "GOTOB " + label + ": the label is not before this block");
+  pc_ = it->second;
+}
+
+void Runner::call_subprogram(const std::string& name, int repeats, std::uint32_t column) {
+  if (calls_.size() >= 16) m_.fail(column, "Too many nested subprogram calls");
+  std::vector<std::filesystem::path> dirs = options_.subroutine_path;
+  dirs.push_back(std::filesystem::path(files_[0].text.name).parent_path());
+  for (const auto& dir : dirs) {
+    for (const char* ext : {".SPF", ".spf", ".MPF", ".mpf", ""}) {
+      std::filesystem::path candidate = (dir.empty() ? std::filesystem::path(".") : dir) / (name + ext);
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(candidate, ec)) continue;
+      std::size_t index = files_.size();
+      for (std::size_t i = 0; i < files_.size(); ++i) {
+        if (files_[i].text.name == candidate.string()) index = i;
+      }
+      if (index == files_.size()) index = add_file(ProgramText::from_file(candidate));
+      calls_.push_back(Call{file_, pc_, 0, repeats - 1});
+      file_ = index;
+      pc_ = 0;
+      return;
+    }
+  }
+  m_.fail(column, "Subprogram " + name + " not found (" + name + ".SPF in the subroutine path or beside the program)");
+}
+
+bool Runner::return_from_subprogram() {
+  if (calls_.empty()) return false;  // M17/RET in the main program ends it
+  Call& c = calls_.back();
+  if (c.remaining > 0) {
+    --c.remaining;
+    pc_ = c.start_pc;
+    return true;
+  }
+  file_ = c.file;
+  pc_ = c.return_pc;
+  calls_.pop_back();
+  return true;
+}
+
+bool Runner::run_block(SBlock& b) {
+  if (b.condition != kNoExpr) {
+    // IF condition GOTOx label: the jump is the only statement the condition guards
+    bool taken = eval(b, b.condition) != 0.0;
+    for (const Item& it : b.items) {
+      if (it.kind == Item::Kind::Keyword && it.name.rfind("GOTO", 0) == 0) {
+        if (taken) jump(it.text, it.name, it.column);
+        return true;
+      }
+    }
+    m_.fail(1, "IF without GOTOF/GOTOB (structured IF/ELSE/ENDIF is not supported yet)");
+  }
+  NeutralBlock nb;
+  if (b.has_comment) {
+    nb.comment = b.comment;
+    nb.has_comment = true;
+  }
+  std::map<std::string, const Item*> words;
+  std::vector<const Item*> gs, ms;
+  bool supa = false, g53 = false, cip = false, ct = false;
+  std::optional<std::string> frame_op;
+  const Item* cycle_call = nullptr;
+  bool mcall = false, program_return = false;
+  std::string subprogram;
+  std::optional<std::string> goto_label, goto_how;
+  std::uint32_t goto_column = 0, sub_column = 0;
+  for (const Item& it : b.items) {
+    switch (it.kind) {
+      case Item::Kind::Assign:
+        m_.parameters().set_named(it.name.size() > 1 && it.name[0] == 'R' &&
+                                          std::all_of(it.name.begin() + 1, it.name.end(), lowering::is_digit)
+                                      ? "_r" + it.name.substr(1)
+                                      : Reader::variable_key(it.name),
+                                  eval(b, it.value));
+        break;
+      case Item::Kind::Word:
+        if (it.name == "G") gs.push_back(&it);
+        else if (it.name == "M") ms.push_back(&it);
+        else {
+          if (words.count(it.name)) m_.fail(it.column, "Address " + it.name + " programmed twice");
+          words[it.name] = &it;
+        }
+        break;
+      case Item::Kind::Call: {
+        const std::string& n = it.name;
+        if (n == "MSG") {
+          if (!it.text.empty()) m_.message(it.text);
+        } else if (table_.cycles.count(n)) {
+          cycle_call = &it;
+        } else if (std::find(table_.unsupported_cycles.begin(), table_.unsupported_cycles.end(), n) != table_.unsupported_cycles.end()) {
+          m_.fail(it.column, n + " is recognised but not supported: ncbridge does not invent its motion "
+                                 "(post the program with explicit moves, or use CYCLE81-CYCLE89)");
+        } else if (n == "CYCLE800") {
+          bool any = false;
+          for (ExprRef a : it.arguments) {
+            if (a != kNoExpr && eval(b, a) != 0.0) any = true;
+          }
+          if (any) m_.fail(it.column, "CYCLE800 with a swivel is not supported yet (only CYCLE800() resetting it)");
+        } else if (std::find(table_.ignored_calls.begin(), table_.ignored_calls.end(), n) != table_.ignored_calls.end()) {
+          // no effect on the canonical toolpath
+        } else {
+          m_.fail(it.column, n + "(...) is not a call ncbridge supports");
+        }
+        break;
+      }
+      case Item::Kind::Keyword: {
+        const std::string& n = it.name;
+        if (n == "SUPA") supa = true;
+        else if (n == "CIP") cip = true;
+        else if (n == "CT") ct = true;
+        else if (n == "TRANS" || n == "ATRANS" || n == "ROT" || n == "AROT") frame_op = n;
+        else if (n == "MCALL") mcall = true;
+        else if (n == "RET") program_return = true;
+        else if (n == "GOTOF" || n == "GOTOB" || n == "GOTO" || n == "GOTOC") {
+          goto_label = it.text;
+          goto_how = n == "GOTOC" ? "GOTO" : n;
+          goto_column = it.column;
+        } else if (n == "G90" || n == "G91") {
+          incremental_ = n == "G91";
+        } else if (std::find(table_.ignored_calls.begin(), table_.ignored_calls.end(), n) != table_.ignored_calls.end()) {
+        } else if (n == "DEF") {
+        } else if (subprogram.empty() && n.size() > 0) {
+          subprogram = n;  // a named subprogram call: PART1
+          sub_column = it.column;
+        } else {
+          m_.fail(it.column, "Unknown word " + n);
+        }
+        break;
+      }
+    }
+  }
+  // L-subprogram call: L10 (P repeats)
+  if (words.count("L")) {
+    subprogram = "L" + std::to_string(std::lround(eval(b, words["L"]->value)));
+    sub_column = words["L"]->column;
+    words.erase("L");
+  }
+
+  // G codes
+  int g4 = 0;
+  for (const Item* g : gs) {
+    double code = eval(b, g->value);
+    const lowering::CodeEntry* e = table_.g(code);
+    if (e == nullptr) m_.fail(g->column, "G" + lowering::code_key(code) + " is not a SINUMERIK G code ncbridge supports");
+    const std::string& meta = e->meta;
+    if (meta == "rapid" || meta == "linear" || meta == "circular_cw" || meta == "circular_ccw") {
+      motion_ = static_cast<int>(*e->rs274);
+    } else if (meta == "absolute" || meta == "incremental") {
+      incremental_ = meta == "incremental";
+    } else if (meta == "dwell") {
+      g4 = static_cast<int>(g->column);
+    } else if (meta == "suppress_frames_block") {
+      g53 = true;
+    } else if (meta == "work_offset_off") {
+      m_.comment("ncbridge: G500: no settable work offset; coordinate system 1 (G54, offsets from the setup) used");
+      nb.g(54, g->column);
+    } else if (meta == "exact_stop_block" || meta == "exact_stop_fine" || meta == "exact_stop_coarse") {
+    } else if (e->rs274) {
+      if (meta == "plane_xy") plane_ = 17;
+      if (meta == "plane_xz") plane_ = 18;
+      if (meta == "plane_yz") plane_ = 19;
+      nb.g(*e->rs274, g->column);
+    } else {
+      m_.fail(g->column, "G" + lowering::code_key(code) + " (" + meta + ") is not supported yet");
+    }
+  }
+  for (const Item* mi : ms) {
+    double code = eval(b, mi->value);
+    const lowering::CodeEntry* e = table_.m(code);
+    if (e == nullptr) m_.fail(mi->column, "M" + lowering::code_key(code) + " is not a SINUMERIK M code ncbridge supports");
+    if (e->meta == "subprogram_return") program_return = true;
+    else if (e->rs274) nb.m(static_cast<int>(*e->rs274), mi->column);
+  }
+
+  // technology words
+  auto value_of = [&](const char* name) -> std::optional<double> {
+    auto it = words.find(name);
+    if (it == words.end()) return std::nullopt;
+    return eval(b, it->second->value);
+  };
+  if (auto f = value_of("F"); f && !g4) nb.add('f', *f, words["F"]->column);
+  if (auto s = value_of("S"); s && !g4) nb.add('s', *s, words["S"]->column);
+  if (words.count("T")) {
+    const Item* t = words["T"];
+    int tool = t->text.empty() ? static_cast<int>(std::lround(eval(b, t->value))) : m_.tool_number_for_name(t->text, t->column);
+    nb.add('t', tool, t->column);
+  }
+  if (auto d = value_of("D")) {
+    // D0: no tool offset; D1..: the offsets of the active tool
+    if (*d == 0) nb.g(49, words["D"]->column);
+    else {
+      nb.g(43, words["D"]->column);
+      int tool = m_.state().tool_in_spindle;  // or the tool this block selects
+      for (const auto& w : nb.words) if (w.letter == 't') tool = static_cast<int>(w.value);
+      nb.add('h', tool, words["D"]->column);
+    }
+  }
+  if (g4) {
+    double seconds = 0;
+    if (auto f = value_of("F")) seconds = *f;
+    else if (auto s = value_of("S")) {
+      if (m_.state().speed <= 0) m_.fail(static_cast<std::uint32_t>(g4), "G4 S (revolutions) with no spindle speed");
+      seconds = *s * 60.0 / m_.state().speed;
+    } else {
+      m_.fail(static_cast<std::uint32_t>(g4), "G4 needs F (seconds) or S (revolutions)");
+    }
+    nb.g(4, static_cast<std::uint32_t>(g4));
+    nb.add('p', seconds, static_cast<std::uint32_t>(g4));
+  }
+
+  // frames: TRANS/ATRANS X Y Z, ROT/AROT RPL= or Z=
+  if (frame_op) {
+    auto v = [&](const char* n) { return value_of(n); };
+    if (*frame_op == "TRANS") {
+      m_.frame = lowering::Frame{{v("X").value_or(0), v("Y").value_or(0), v("Z").value_or(0)}, 0};
+    } else if (*frame_op == "ATRANS") {
+      m_.frame.shift_within({v("X").value_or(0), v("Y").value_or(0), 0});
+      m_.frame.offset.z += v("Z").value_or(0);
+    } else {
+      std::optional<double> angle = v("RPL");
+      if (!angle) angle = v("Z");
+      if (v("X") || v("Y")) m_.fail(1, *frame_op + " about X or Y (a tilted plane) is not supported");
+      if (*frame_op == "ROT") m_.frame = lowering::Frame{{0, 0, 0}, angle.value_or(0)};
+      else m_.frame.rotation_deg += angle.value_or(0);
+    }
+    return !m_.execute(nb);
+  }
+
+  // motion
+  Point3 here = m_.position();
+  auto axis = [&](const char* n, double current) -> std::optional<double> {
+    auto it = words.find(n);
+    if (it == words.end()) return std::nullopt;
+    double v = eval(b, it->second->value);
+    char mode = it->second->mode;
+    bool inc = mode == 'I' || (mode != 'A' && incremental_);
+    return inc ? current + v : v;
+  };
+  std::optional<double> x = axis("X", here.x), y = axis("Y", here.y), z = axis("Z", here.z);
+  bool has_axes = x || y || z || words.count("A") || words.count("B") || words.count("C");
+  const std::uint32_t col = b.items.empty() ? 1 : b.items.front().column;
+  if (supa || g53) {
+    // SUPA/G53/G153: machine coordinates for this block
+    for (const char* n : {"X", "Y", "Z", "A", "B", "C"}) {
+      if (auto v = value_of(n)) nb.add(static_cast<char>(n[0] - 'A' + 'a'), *v, words[n]->column);
+    }
+    if (has_axes) {
+      nb.g(53, col);
+      nb.g(motion_ == 1 ? 1 : 0, col);
+    }
+  } else if (has_axes || ((cip || ct || motion_ == 2 || motion_ == 3) &&
+                              (words.count("I") || words.count("J") || words.count("AR") || words.count("CR")))) {
+    for (const char* n : {"A", "B", "C"}) {
+      if (auto v = value_of(n)) {
+        const canonical::Pose& p = m_.state().position;
+        double current = n[0] == 'A' ? p.a : n[0] == 'B' ? p.b : p.c;
+        nb.add(static_cast<char>(n[0] - 'A' + 'a'), incremental_ ? current + *v : *v, words[n]->column);
+      }
+    }
+    bool arc_word = cip || ct || motion_ == 2 || motion_ == 3;
+    if (!arc_word) {
+      nb.g(motion_, col);
+      m_.put_axes(nb, x, y, z, col);
+      double dx = x.value_or(here.x) - here.x, dy = y.value_or(here.y) - here.y, l = std::hypot(dx, dy);
+      if (l > 1e-12) { tangent_ = {dx / l, dy / l, 0}; have_tangent_ = true; }
+    } else {
+      if (plane_ != 17) {
+        if (m_.frame.rotation_deg != 0 || cip || ct || words.count("AR")) {
+          m_.fail(col, "Arcs outside G17 support only I/J/K and CR= without frame rotation");
+        }
+        nb.g(motion_, col);
+        m_.put_axes(nb, x, y, z, col);
+        for (const char* n : {"I", "J", "K"}) {
+          if (auto v = value_of(n)) nb.add(static_cast<char>(n[0] - 'A' + 'a'), *v, words[n]->column);
+        }
+        if (auto cr = value_of("CR")) nb.add('r', *cr, words["CR"]->column);
+      } else {
+        Point3 end{x.value_or(here.x), y.value_or(here.y), z.value_or(here.z)};
+        bool cw = motion_ == 2;
+        double cx = 0, cy = 0;
+        bool have_centre = false;
+        if (cip) {
+          auto i1 = axis("I1", here.x), j1 = axis("J1", here.y);
+          if (!i1 || !j1) m_.fail(col, "CIP needs the intermediate point I1= and J1=");
+          // the circle through start, intermediate and end point
+          double ax = here.x, ay = here.y, bx = *i1, by = *j1, ex = end.x, ey = end.y;
+          double d = 2 * (ax * (by - ey) + bx * (ey - ay) + ex * (ay - by));
+          if (std::fabs(d) < 1e-12) m_.fail(col, "CIP points lie on a straight line");
+          double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by, e2 = ex * ex + ey * ey;
+          cx = (a2 * (by - ey) + b2 * (ey - ay) + e2 * (ay - by)) / d;
+          cy = (a2 * (ex - bx) + b2 * (ax - ex) + e2 * (bx - ax)) / d;
+          cw = ((bx - ax) * (ey - ay) - (by - ay) * (ex - ax)) < 0;
+          have_centre = true;
+        } else if (ct) {
+          if (!have_tangent_) m_.fail(col, "CT needs a preceding contour element to be tangent to");
+          double dx = end.x - here.x, dy = end.y - here.y;
+          double nx = -tangent_.y, ny = tangent_.x;
+          double nd = nx * dx + ny * dy;
+          if (std::fabs(nd) < 1e-9) m_.fail(col, "CT end point lies on the tangent: program G1");
+          double k = (dx * dx + dy * dy) / (2 * nd);
+          cx = here.x + nx * k;
+          cy = here.y + ny * k;
+          cw = k < 0;
+          have_centre = true;
+        } else if (words.count("I") || words.count("J")) {
+          auto centre = [&](const char* n, double current) {
+            auto it = words.find(n);
+            if (it == words.end()) return current;
+            double v = eval(b, it->second->value);
+            return it->second->mode == 'A' ? v : current + v;
+          };
+          cx = centre("I", here.x);
+          cy = centre("J", here.y);
+          have_centre = true;
+          if (auto ar = value_of("AR"); ar && !x && !y) {
+            double r0 = std::hypot(here.x - cx, here.y - cy);
+            double a0 = std::atan2(here.y - cy, here.x - cx) + (cw ? -*ar : *ar) * kDeg;
+            end.x = cx + r0 * std::cos(a0);
+            end.y = cy + r0 * std::sin(a0);
+          }
+        } else if (auto ar = value_of("AR")) {
+          // end point and opening angle: the centre lies on the chord's bisector
+          double dx = end.x - here.x, dy = end.y - here.y, chord = std::hypot(dx, dy);
+          if (chord < 1e-9 || *ar <= 0 || *ar >= 360) m_.fail(words["AR"]->column, "AR= needs an angle between 0 and 360 and a distinct end point");
+          double half = *ar * kDeg / 2;
+          double h = chord / 2 / std::tan(half);  // distance of the centre from the chord middle (signed)
+          double nx = -dy / chord, ny = dx / chord;  // left normal
+          double side = cw ? -1.0 : 1.0;
+          cx = (here.x + end.x) / 2 + side * nx * h;
+          cy = (here.y + end.y) / 2 + side * ny * h;
+          have_centre = true;
+        } else if (auto cr = value_of("CR")) {
+          nb.g(motion_, col);
+          m_.put_axes(nb, end.x, end.y, z, col);
+          nb.add('r', *cr, words["CR"]->column);
+        } else {
+          m_.fail(col, "Circle needs I/J, CR=, AR=, CIP or CT");
+        }
+        if (have_centre) {
+          m_.put_xy_arc(nb, cw, end.x, end.y, z, cx, cy, col);
+          double rx = end.x - cx, ry = end.y - cy, l = std::hypot(rx, ry);
+          if (l > 0) { tangent_ = cw ? Point3{ry / l, -rx / l, 0} : Point3{-ry / l, rx / l, 0}; have_tangent_ = true; }
+        }
+      }
+    }
+  }
+  if (m_.execute(nb)) return false;
+
+  if (cycle_call) cycle(*cycle_call, b, mcall);
+  else if (mcall) modal_cycle_.reset();
+  if (modal_cycle_ && !cycle_call && has_axes && !supa) run_cycle_here(col);
+  if (goto_label) {
+    jump(*goto_label, *goto_how, goto_column);
+    return true;
+  }
+  if (!subprogram.empty()) {
+    int repeats = 1;
+    if (auto p = value_of("P")) repeats = static_cast<int>(std::lround(*p));
+    call_subprogram(subprogram, repeats, sub_column);
+    return true;
+  }
+  if (program_return) return return_from_subprogram();
+  return true;
+}
+
+void Runner::cycle(const Item& call, const SBlock& b, bool modal_call) {
+  const lowering::CycleEntry& entry = table_.cycles.at(call.name);
+  std::map<std::string, double> args;
+  if (call.arguments.size() > entry.positional.size()) {
+    m_.fail(call.column, call.name + " takes at most " + std::to_string(entry.positional.size()) + " parameters");
+  }
+  for (std::size_t i = 0; i < call.arguments.size(); ++i) {
+    if (call.arguments[i] != kNoExpr) args[entry.positional[i]] = eval(b, call.arguments[i]);
+  }
+  cycle_name_ = call.name;
+  cycle_args_ = args;
+  if (modal_call) {
+    modal_cycle_ = call.name;
+    modal_cycle_args_ = args;
+    return;  // MCALL: the cycle runs at the positions programmed next
+  }
+  run_cycle_here(call.column);
+}
+
+void Runner::run_cycle_here(std::uint32_t column) {
+  const std::string name = modal_cycle_ ? *modal_cycle_ : cycle_name_;
+  const std::map<std::string, double>& a = modal_cycle_ ? modal_cycle_args_ : cycle_args_;
+  auto get = [&](const char* p, std::optional<double> fallback = std::nullopt) -> double {
+    auto it = a.find(p);
+    if (it != a.end()) return it->second;
+    if (fallback) return *fallback;
+    m_.fail(column, name + ": parameter " + p + " missing");
+  };
+  double rtp = get("RTP"), rfp = get("RFP", 0.0), sdis = std::fabs(get("SDIS", 0.0));
+  double dpr = a.count("DPR") ? a.at("DPR") : 0.0;
+  double bottom = dpr != 0.0 ? rfp - std::fabs(dpr) : get("DP");
+  double r = rfp + sdis;
+  if (bottom >= r) m_.fail(column, name + ": the final drilling depth is not below the reference plane");
+  int code = 81;
+  double q = 0, p = 0;
+  if (name == "CYCLE82") { code = 82; p = get("DTB", 0.0); }
+  else if (name == "CYCLE83") {
+    double first = a.count("FDPR") && a.at("FDPR") != 0 ? std::fabs(a.at("FDPR"))
+                   : a.count("FDEP") ? rfp - a.at("FDEP") : 0.0;
+    if (first <= 0) m_.fail(column, "CYCLE83 needs the first drilling depth FDEP or FDPR");
+    if (a.count("DAM") && a.at("DAM") != 0) m_.comment("ncbridge: CYCLE83 degression DAM is not applied (equal pecks used)");
+    q = first;
+    code = a.count("VARI") && a.at("VARI") == 0 ? 73 : 83;
+  } else if (name == "CYCLE84") {
+    double pitch = a.count("PIT") ? a.at("PIT") : 0.0;
+    if (pitch == 0) m_.fail(column, "CYCLE84 needs the thread pitch PIT");
+    if (m_.state().speed <= 0) m_.fail(column, "CYCLE84 needs a spindle speed to feed the pitch");
+    NeutralBlock f;
+    f.add('f', std::fabs(pitch) * m_.state().speed, column);
+    m_.execute(f);
+    code = 84;
+  } else if (name == "CYCLE85") code = 85;
+  else if (name == "CYCLE86") { code = 86; p = get("DTB", 0.0); }
+  else if (name == "CYCLE87") { code = 88; p = 0; }
+  else if (name == "CYCLE88") { code = 88; p = get("DTB", 0.0); }
+  else if (name == "CYCLE89") { code = 89; p = get("DTB", 0.0); }
+  Point3 here = m_.position();
+  if (std::fabs(here.z - rtp) > 1e-9) {
+    NeutralBlock up;
+    up.g(0, column);
+    m_.put_axes(up, std::nullopt, std::nullopt, rtp, column);
+    if (m_.execute(up)) return;
+  }
+  NeutralBlock nb;
+  nb.g(98, column);
+  nb.g(code, column);
+  Point3 e = m_.frame.to_executor({here.x, here.y, 0});
+  nb.add('x', e.x, column);
+  nb.add('y', e.y, column);
+  nb.add('z', bottom + m_.frame.offset.z, column);
+  nb.add('r', r + m_.frame.offset.z, column);
+  if (code == 83 || code == 73) nb.add('q', q, column);
+  if (code == 82 || code == 86 || code == 88 || code == 89) nb.add('p', p, column);
+  m_.execute(nb);
+  NeutralBlock cancel;
+  cancel.g(80, column);
+  m_.execute(cancel);
+}
+
+}  // namespace
+
+void run(ProgramText program, const Options& options, canonical::Sink& sink) {
+  Runner runner(options, sink);
+  runner.run(std::move(program));
+}
+
+}  // namespace ncbridge::interpreter::siemens840d
