@@ -1,27 +1,38 @@
-// ISO 14649 model -> Part 21 instance graph. Entity names and attribute orders follow the
-// ISO 14649-10/-11/-111 drafts (reference/iso14649/combined_schema_iso14649_only.exp): inherited
-// attributes first, `$` only for OPTIONAL attributes, `()` for empty required aggregates.
-// Ids are given top-down (PROJECT #1, WORKPLAN #2, ...), each resource once, in first use order.
+// ISO 14649 model -> Part 21 text. Entity names and attribute orders follow the ISO 14649-10/-11/
+// -111 drafts (reference/iso14649/combined_schema_iso14649_only.exp): inherited attributes first,
+// `$` only for OPTIONAL attributes, `()` for empty required aggregates.
+// Ids are given bottom-up: everything an instance refers to is written before it, PROJECT last,
+// so the text streams out as it is made (part21_instance_stream.hpp). Shared: each resource
+// (tool, technology, machine functions), named placements and planes of equal value, and value
+// instances (points, directions, arc placements, circles) repeated while still remembered
+// (recent_instances.hpp), such as the point where one toolpath segment ends and the next begins.
+#include <algorithm>
+#include <array>
+#include <functional>
 #include <map>
-#include <tuple>
+#include <stdexcept>
+#include <string_view>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
+#include "ncbridge/step_writer/part21_reader.hpp"
 #include "ncbridge/step_writer/part21_writer.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
+#include "cc2_writer.hpp"
+#include "part21_instance_stream.hpp"
+#include "recent_instances.hpp"
 
 namespace ncbridge::step_writer {
 
 namespace {
 
-using namespace part21;
+using part21::InstanceId;
+using part21::InstanceStream;
 namespace sn = stepnc;
 
 template <class... F> struct Overload : F... { using F::operator()...; };
 template <class... F> Overload(F...) -> Overload<F...>;
-
-Value opt_real(const std::optional<double>& v) { return v ? real(*v) : unset(); }
-Value opt_bool(const std::optional<bool>& v) { return v ? boolean(*v) : unset(); }
-Value opt_ref(std::optional<InstanceId> id) { return id ? ref(*id) : unset(); }
 
 std::string_view tool_body_entity(sn::ToolBody body) {
   switch (body) {
@@ -53,105 +64,35 @@ std::string_view toolpath_type_name(sn::ToolpathType t) {
   return "TRAJECTORY_PATH";
 }
 
-// Where instances go: a Graph (stepnc_to_graph) or straight into the file text (write_stepnc,
-// which never holds the instance graph: a million-point toolpath stays cheap). Ids are
-// consecutive from 1 and references only point back, so both give the same numbering.
-class Emitter {
- public:
-  virtual ~Emitter() = default;
-  virtual InstanceId add(std::string_view entity, std::vector<Value> attributes) = 0;
-  virtual InstanceId point(const sn::CartesianPoint& c) = 0;  // CARTESIAN_POINT('',(x,y,z))
-  // POLYLINE('',(#first..#last)) over consecutive ids
-  virtual InstanceId polyline(InstanceId first, InstanceId last) = 0;
-};
+using Bits3 = std::array<std::uint64_t, 3>;
+Bits3 bits_of(double x, double y, double z) {
+  using R = part21::RecentInstances<3>;
+  return {R::bits(x), R::bits(y), R::bits(z)};
+}
 
-class GraphEmitter final : public Emitter {
- public:
-  explicit GraphEmitter(Graph& g) : g_(g) {}
-  InstanceId add(std::string_view entity, std::vector<Value> attributes) override { return g_.add(entity, std::move(attributes)); }
-  InstanceId point(const sn::CartesianPoint& c) override {
-    return g_.add("CARTESIAN_POINT", {string(""), list({real(c.x), real(c.y), real(c.z)})});
-  }
-  InstanceId polyline(InstanceId first, InstanceId last) override {
-    std::vector<InstanceId> ids;
-    for (InstanceId i = first; i <= last; ++i) ids.push_back(i);
-    return g_.add("POLYLINE", {string(""), list_of_refs(ids)});
-  }
-
- private:
-  Graph& g_;
-};
-
-class TextEmitter final : public Emitter {
- public:
-  explicit TextEmitter(std::string& out) : out_(out) {}
-  InstanceId add(std::string_view entity, std::vector<Value> attributes) override {
-    start(entity);
-    for (std::size_t i = 0; i < attributes.size(); ++i) {
-      if (i) out_ += ',';
-      out_ += format_value(attributes[i]);
-    }
-    return finish();
-  }
-  InstanceId point(const sn::CartesianPoint& c) override {
-    start("CARTESIAN_POINT");
-    out_ += "'',(";
-    out_ += format_real(c.x);
-    out_ += ',';
-    out_ += format_real(c.y);
-    out_ += ',';
-    out_ += format_real(c.z);
-    out_ += ')';
-    return finish();
-  }
-  InstanceId polyline(InstanceId first, InstanceId last) override {
-    start("POLYLINE");
-    out_ += "'',(";
-    std::size_t line_start = out_.size();
-    for (InstanceId i = first; i <= last; ++i) {
-      if (i != first) out_ += ',';
-      if (out_.size() - line_start > 90) {  // keep lines readable: wrap long reference lists
-        out_ += "\n  ";
-        line_start = out_.size();
-      }
-      out_ += '#';
-      out_ += std::to_string(i);
-    }
-    out_ += ')';
-    return finish();
-  }
-
- private:
-  void start(std::string_view entity) {
-    out_ += '#';
-    out_ += std::to_string(next_);
-    out_ += '=';
-    out_ += entity;
-    out_ += '(';
-  }
-  InstanceId finish() {
-    out_ += ");\n";
-    return next_++;
-  }
-  std::string& out_;
-  InstanceId next_ = 1;
-};
+// A named placement's (or plane's) name and exact value; named ones are shared exactly.
+using PlacementKey = std::pair<std::array<std::uint64_t, 9>, std::string_view>;
+PlacementKey key_of(std::string_view name, const sn::Axis2Placement3d& a) {
+  using R = part21::RecentInstances<3>;
+  return {{R::bits(a.location.x), R::bits(a.location.y), R::bits(a.location.z), R::bits(a.axis.x), R::bits(a.axis.y),
+           R::bits(a.axis.z), R::bits(a.ref_direction.x), R::bits(a.ref_direction.y), R::bits(a.ref_direction.z)},
+          name};
+}
 
 class Cc1Writer {
  public:
-  Cc1Writer(const sn::Project& p, Emitter& out) : p_(p), g_(out) {}
+  Cc1Writer(const sn::Project& p, InstanceStream& out)
+      : p_(p),
+        s_(out),
+        tools_(p.tools.size()),
+        technologies_(p.technologies.size()),
+        functions_(p.machine_functions.size()),
+        operations_(p.operations.size()),
+        features_(p.features.size()) {}
 
   void build() {
-    // Which operations each feature carries (its_operations), in workplan order.
-    feature_operations_.resize(p_.features.size());
-    for (const auto& e : p_.main_workplan.its_elements) {
-      if (const auto* ws = std::get_if<sn::MachiningWorkingstep>(&e)) {
-        feature_operations_.at(ws->its_feature.index).push_back(ws->its_operation);
-      }
-    }
-    // Bottom-up: everything an instance refers to is written before it; PROJECT comes last.
-    const std::optional<InstanceId> rawpiece =
-        p_.rawpiece ? std::optional(write_workpiece(*p_.rawpiece, std::nullopt)) : std::nullopt;
+    index_feature_operations();
+    const InstanceId rawpiece = p_.rawpiece ? write_workpiece(*p_.rawpiece, 0) : 0;
     workpiece_ = write_workpiece(p_.workpiece, rawpiece);
     const InstanceId setup = write_setup();
     std::vector<InstanceId> executables;
@@ -159,281 +100,519 @@ class Cc1Writer {
     for (const auto& e : p_.main_workplan.its_elements) {
       executables.push_back(std::visit([&](const auto& x) { return write_executable(x); }, e));
     }
-    const InstanceId workplan = g_.add("WORKPLAN", {string(p_.main_workplan.its_id), list_of_refs(executables), unset(), ref(setup), unset()});
-    g_.add("PROJECT", {string(p_.its_id), ref(workplan), list_of_refs({workpiece_}), unset(), unset(), unset()});
+    s_.begin("WORKPLAN");
+    s_.string(p_.main_workplan.its_id);
+    s_.refs(executables);
+    s_.unset();
+    s_.ref(setup);
+    s_.unset();
+    const InstanceId workplan = s_.end();
+    s_.begin("PROJECT");
+    s_.string(p_.its_id);
+    s_.ref(workplan);
+    s_.refs(std::array{workpiece_});
+    s_.unset();
+    s_.unset();
+    s_.unset();
+    s_.end();
   }
 
  private:
-  // ---- geometry
-  InstanceId point(const sn::CartesianPoint& c) { return g_.point(c); }
-  // The six axis directions are written once and shared; others (arc references) each once.
-  InstanceId direction(const sn::Direction& d) {
-    int slot = -1;
-    const double c[3] = {d.x, d.y, d.z};
-    for (int k = 0; k < 3; ++k) {
-      if ((c[k] == 1 || c[k] == -1) && c[(k + 1) % 3] == 0 && c[(k + 2) % 3] == 0) slot = 2 * k + (c[k] < 0 ? 1 : 0);
+  // Which operations each feature carries (its_operations), in workplan order, as one flat
+  // table: feature f's operations are feature_ops_[feature_first_[f] .. feature_first_[f + 1]).
+  void index_feature_operations() {
+    feature_first_.assign(p_.features.size() + 1, 0);
+    for (const auto& e : p_.main_workplan.its_elements) {
+      if (const auto* ws = std::get_if<sn::MachiningWorkingstep>(&e)) ++feature_first_.at(ws->its_feature.index + 1);
     }
-    if (slot >= 0 && axis_directions_[slot] != 0) return axis_directions_[slot];
-    const InstanceId id = g_.add("DIRECTION", {string(""), list({real(d.x), real(d.y), real(d.z)})});
-    if (slot >= 0) axis_directions_[slot] = id;
+    for (std::size_t f = 1; f < feature_first_.size(); ++f) feature_first_[f] += feature_first_[f - 1];
+    feature_ops_.resize(feature_first_.back());
+    std::vector<std::uint32_t> filled(feature_first_.begin(), feature_first_.end() - 1);
+    for (const auto& e : p_.main_workplan.its_elements) {
+      if (const auto* ws = std::get_if<sn::MachiningWorkingstep>(&e)) feature_ops_[filled[ws->its_feature.index]++] = ws->its_operation;
+    }
+  }
+
+  // ---- geometry
+  InstanceId point(const sn::CartesianPoint& c) {
+    const Bits3 key = bits_of(c.x, c.y, c.z);
+    if (const InstanceId id = points_.find(key)) return id;
+    s_.begin("CARTESIAN_POINT");
+    s_.string("");
+    s_.open_list();
+    s_.real(c.x);
+    s_.real(c.y);
+    s_.real(c.z);
+    s_.close_list();
+    const InstanceId id = s_.end();
+    points_.remember(key, id);
     return id;
   }
-  // Placements and planes are shared between instances with the same name and value.
-  using PlacementKey = std::tuple<std::string, double, double, double, double, double, double, double, double, double>;
-  static PlacementKey key_of(const std::string& name, const sn::Axis2Placement3d& a) {
-    return {name, a.location.x, a.location.y, a.location.z, a.axis.x, a.axis.y, a.axis.z,
-            a.ref_direction.x, a.ref_direction.y, a.ref_direction.z};
-  }
-  InstanceId placement(const sn::Axis2Placement3d& a, std::string name = "") {
-    auto key = key_of(name, a);
-    if (auto it = placements_.find(key); it != placements_.end()) return it->second;
-    const InstanceId id = new_placement(a, std::move(name));
-    placements_.emplace(std::move(key), id);
+  InstanceId direction(const sn::Direction& d) {
+    const Bits3 key = bits_of(d.x, d.y, d.z);
+    if (const InstanceId id = directions_.find(key)) return id;
+    s_.begin("DIRECTION");
+    s_.string("");
+    s_.open_list();
+    s_.real(d.x);
+    s_.real(d.y);
+    s_.real(d.z);
+    s_.close_list();
+    const InstanceId id = s_.end();
+    directions_.remember(key, id);
     return id;
   }
-  InstanceId new_placement(const sn::Axis2Placement3d& a, std::string name) {
+  InstanceId new_placement(const sn::Axis2Placement3d& a, std::string_view name) {
     const InstanceId location = point(a.location);
     const InstanceId axis = direction(a.axis);
     const InstanceId ref_direction = direction(a.ref_direction);
-    return g_.add("AXIS2_PLACEMENT_3D", {string(std::move(name)), ref(location), ref(axis), ref(ref_direction)});
+    s_.begin("AXIS2_PLACEMENT_3D");
+    s_.string(name);
+    s_.ref(location);
+    s_.ref(axis);
+    s_.ref(ref_direction);
+    return s_.end();
   }
-  InstanceId plane(const sn::Plane& pl, const std::string& name) {
+  // Named placements and planes (security plane, feature placement, depth planes, setups) are
+  // few and shared exactly; the unnamed placements of arcs are shared while remembered.
+  InstanceId placement(const sn::Axis2Placement3d& a, std::string_view name) {
+    auto key = key_of(name, a);
+    if (auto it = placements_.find(key); it != placements_.end()) return it->second;
+    const InstanceId id = new_placement(a, name);
+    placements_.emplace(key, id);
+    return id;
+  }
+  InstanceId plane(const sn::Plane& pl, std::string_view name) {
     auto key = key_of(name, pl.position);
     if (auto it = planes_.find(key); it != planes_.end()) return it->second;
     const InstanceId position = placement(pl.position, name);
-    const InstanceId id = g_.add("PLANE", {string(name), ref(position)});
+    s_.begin("PLANE");
+    s_.string(name);
+    s_.ref(position);
+    const InstanceId id = s_.end();
     planes_.emplace(key, id);
+    return id;
+  }
+  InstanceId arc_placement(const sn::Axis2Placement3d& a) {
+    const InstanceId location = point(a.location);
+    const InstanceId axis = direction(a.axis);
+    const InstanceId ref_direction = direction(a.ref_direction);
+    const Bits3 key{location, axis, ref_direction};
+    if (const InstanceId id = arc_placements_.find(key)) return id;
+    s_.begin("AXIS2_PLACEMENT_3D");
+    s_.string("");
+    s_.ref(location);
+    s_.ref(axis);
+    s_.ref(ref_direction);
+    const InstanceId id = s_.end();
+    arc_placements_.remember(key, id);
+    return id;
+  }
+  InstanceId circle(const sn::TrimmedCircle& t) {
+    const InstanceId position = arc_placement(t.position);
+    const std::array<std::uint64_t, 2> key{position, part21::RecentInstances<2>::bits(t.radius)};
+    if (const InstanceId id = circles_.find(key)) return id;
+    s_.begin("CIRCLE");
+    s_.string("");
+    s_.ref(position);
+    s_.real(t.radius);
+    const InstanceId id = s_.end();
+    circles_.remember(key, id);
     return id;
   }
 
   InstanceId polyline(const sn::Polyline& l) {
-    const InstanceId first = point(l.points.at(0));
-    InstanceId last = first;
-    for (std::size_t i = 1; i < l.points.size(); ++i) last = point(l.points[i]);
-    return g_.polyline(first, last);
+    if (l.points.empty()) throw std::invalid_argument("write_stepnc: a POLYLINE needs at least one point");
+    polyline_points_.clear();
+    for (const auto& c : l.points) polyline_points_.push_back(point(c));
+    s_.begin("POLYLINE");
+    s_.string("");
+    s_.refs(polyline_points_);
+    return s_.end();
   }
   InstanceId trimmed_circle(const sn::TrimmedCircle& t) {
-    const InstanceId position = new_placement(t.position, "");
-    const InstanceId circle = g_.add("CIRCLE", {string(""), ref(position), real(t.radius)});
+    const InstanceId basis = circle(t);
     const InstanceId p1 = point(t.trim_1_point);
     const InstanceId p2 = point(t.trim_2_point);
-    return g_.add("TRIMMED_CURVE", {string(""), ref(circle),
-                                    list({ref(p1), typed("PARAMETER_VALUE", real(t.trim_1_parameter))}),
-                                    list({ref(p2), typed("PARAMETER_VALUE", real(t.trim_2_parameter))}),
-                                    boolean(t.sense_agreement), enumeration("PARAMETER")});
+    s_.begin("TRIMMED_CURVE");
+    s_.string("");
+    s_.ref(basis);
+    s_.open_list();
+    s_.ref(p1);
+    s_.typed_real("PARAMETER_VALUE", t.trim_1_parameter);
+    s_.close_list();
+    s_.open_list();
+    s_.ref(p2);
+    s_.typed_real("PARAMETER_VALUE", t.trim_2_parameter);
+    s_.close_list();
+    s_.boolean(t.sense_agreement);
+    s_.enumeration("PARAMETER");
+    return s_.end();
   }
   InstanceId curve(const sn::CompositeCurve& c) {
     if (c.segments.size() == 1) {
       if (const auto* l = std::get_if<sn::Polyline>(&c.segments[0])) return polyline(*l);
     }
-    std::vector<InstanceId> segments;
+    std::vector<InstanceId>& segments = segment_ids_;
+    segments.clear();
     for (std::size_t i = 0; i < c.segments.size(); ++i) {
       const InstanceId parent = std::visit(Overload{[&](const sn::Polyline& l) { return polyline(l); },
                                                     [&](const sn::TrimmedCircle& t) { return trimmed_circle(t); }},
                                            c.segments[i]);
-      const bool last = i + 1 == c.segments.size();
-      segments.push_back(g_.add("COMPOSITE_CURVE_SEGMENT",
-                                {enumeration(last ? "DISCONTINUOUS" : "CONTINUOUS"), boolean(true), ref(parent)}));
+      s_.begin("COMPOSITE_CURVE_SEGMENT");
+      s_.enumeration(i + 1 == c.segments.size() ? "DISCONTINUOUS" : "CONTINUOUS");
+      s_.boolean(true);
+      s_.ref(parent);
+      segments.push_back(s_.end());
     }
-    return g_.add("COMPOSITE_CURVE", {string(""), list_of_refs(segments), enumeration("F")});
+    s_.begin("COMPOSITE_CURVE");
+    s_.string("");
+    s_.refs(segments);
+    s_.enumeration("F");
+    return s_.end();
   }
 
   // ---- resources
   InstanceId tool(sn::ToolRef r) {
-    if (auto it = tools_.find(r.index); it != tools_.end()) return it->second;
+    InstanceId& written = tools_.at(r.index);
+    if (written != 0) return written;
     const sn::MillingCuttingTool& t = p_.tool(r);
     const auto& d = t.dimension;
-    const InstanceId dimension = g_.add("MILLING_TOOL_DIMENSION",
-        {real(d.diameter), opt_real(d.tool_tip_half_angle), opt_real(d.tool_circumference_angle),
-         opt_real(d.cutting_edge_length), opt_real(d.edge_radius), opt_real(d.edge_center_vertical),
-         opt_real(d.edge_center_horizontal)});
-    std::vector<Value> body{ref(dimension), t.number_of_teeth ? integer(*t.number_of_teeth) : unset(),
-                            t.hand_of_cut ? enumeration(*t.hand_of_cut == sn::Hand::Left    ? "LEFT"
-                                                        : *t.hand_of_cut == sn::Hand::Right ? "RIGHT"
-                                                                                            : "NEUTRAL")
-                                          : unset(),
-                            opt_bool(t.coolant_through_tool), opt_real(t.pilot_length)};
+    s_.begin("MILLING_TOOL_DIMENSION");
+    s_.real(d.diameter);
+    s_.opt_real(d.tool_tip_half_angle);
+    s_.opt_real(d.tool_circumference_angle);
+    s_.opt_real(d.cutting_edge_length);
+    s_.opt_real(d.edge_radius);
+    s_.opt_real(d.edge_center_vertical);
+    s_.opt_real(d.edge_center_horizontal);
+    const InstanceId dimension = s_.end();
+
+    s_.begin(tool_body_entity(t.body));
+    s_.ref(dimension);
+    t.number_of_teeth ? s_.integer(*t.number_of_teeth) : s_.unset();
+    if (t.hand_of_cut) {
+      s_.enumeration(*t.hand_of_cut == sn::Hand::Left ? "LEFT" : *t.hand_of_cut == sn::Hand::Right ? "RIGHT" : "NEUTRAL");
+    } else {
+      s_.unset();
+    }
+    s_.opt_boolean(t.coolant_through_tool);
+    s_.opt_real(t.pilot_length);
     switch (t.body) {
-      case sn::ToolBody::TSlotMill: case sn::ToolBody::Countersink: body.push_back(unset()); break;
-      case sn::ToolBody::BoringTool: body.push_back(boolean(false)); break;
-      case sn::ToolBody::UserDefinedTool: body.push_back(string(t.its_id)); break;
+      case sn::ToolBody::TSlotMill: case sn::ToolBody::Countersink: s_.unset(); break;
+      case sn::ToolBody::BoringTool: s_.boolean(false); break;
+      case sn::ToolBody::UserDefinedTool: s_.string(t.its_id); break;
       default: break;
     }
-    const InstanceId body_id = g_.add(tool_body_entity(t.body), std::move(body));
-    const InstanceId component = g_.add("CUTTING_COMPONENT", {real(t.tool_offset_length), unset(), unset(), unset(), unset()});
-    const InstanceId id = g_.add("MILLING_CUTTING_TOOL", {string(t.its_id), ref(body_id), list_of_refs({component}),
-                                                          opt_real(t.overall_assembly_length), unset(), unset()});
-    tools_.emplace(r.index, id);
-    return id;
+    const InstanceId body = s_.end();
+
+    s_.begin("CUTTING_COMPONENT");
+    s_.real(t.tool_offset_length);
+    for (int k = 0; k < 4; ++k) s_.unset();
+    const InstanceId component = s_.end();
+
+    s_.begin("MILLING_CUTTING_TOOL");
+    s_.string(t.its_id);
+    s_.ref(body);
+    s_.refs(std::array{component});
+    s_.opt_real(t.overall_assembly_length);
+    s_.unset();
+    s_.unset();
+    return written = s_.end();
   }
   InstanceId technology(sn::TechnologyRef r) {
-    if (auto it = technologies_.find(r.index); it != technologies_.end()) return it->second;
+    InstanceId& written = technologies_.at(r.index);
+    if (written != 0) return written;
     const sn::MillingTechnology& t = p_.technology(r);
-    const InstanceId id = g_.add("MILLING_TECHNOLOGY",
-        {opt_real(t.feedrate), enumeration(t.feedrate_reference == sn::ToolReferencePoint::Tcp ? "TCP" : "CCP"),
-         opt_real(t.cutspeed), opt_real(t.spindle), opt_real(t.feedrate_per_tooth),
-         boolean(t.synchronize_spindle_with_feed), boolean(t.inhibit_feedrate_override),
-         boolean(t.inhibit_spindle_override), unset()});
-    technologies_.emplace(r.index, id);
-    return id;
+    s_.begin("MILLING_TECHNOLOGY");
+    s_.opt_real(t.feedrate);
+    s_.enumeration(t.feedrate_reference == sn::ToolReferencePoint::Tcp ? "TCP" : "CCP");
+    s_.opt_real(t.cutspeed);
+    s_.opt_real(t.spindle);
+    s_.opt_real(t.feedrate_per_tooth);
+    s_.boolean(t.synchronize_spindle_with_feed);
+    s_.boolean(t.inhibit_feedrate_override);
+    s_.boolean(t.inhibit_spindle_override);
+    s_.unset();
+    return written = s_.end();
   }
   InstanceId functions(sn::MachineFunctionsRef r) {
-    if (auto it = functions_.find(r.index); it != functions_.end()) return it->second;
+    InstanceId& written = functions_.at(r.index);
+    if (written != 0) return written;
     const sn::MillingMachineFunctions& f = p_.functions(r);
-    const InstanceId id = g_.add("MILLING_MACHINE_FUNCTIONS",
-        {boolean(f.coolant), opt_real(f.coolant_pressure), opt_bool(f.mist), boolean(f.through_spindle_coolant),
-         opt_real(f.through_pressure), list({}), boolean(f.chip_removal), unset(), unset(), list({})});
-    functions_.emplace(r.index, id);
-    return id;
+    s_.begin("MILLING_MACHINE_FUNCTIONS");
+    s_.boolean(f.coolant);
+    s_.opt_real(f.coolant_pressure);
+    s_.opt_boolean(f.mist);
+    s_.boolean(f.through_spindle_coolant);
+    s_.opt_real(f.through_pressure);
+    s_.open_list();
+    s_.close_list();
+    s_.boolean(f.chip_removal);
+    s_.unset();
+    s_.unset();
+    s_.open_list();
+    s_.close_list();
+    return written = s_.end();
   }
 
   // ---- toolpaths
   InstanceId toolpath_list(const sn::ToolpathList& l) {
-    std::vector<InstanceId> items;
+    std::vector<InstanceId>& items = trajectory_ids_;
+    items.clear();
     for (const auto& t : l.its_list) {
       const InstanceId basic = curve(t.basiccurve);
-      items.push_back(g_.add("CUTTER_LOCATION_TRAJECTORY",
-          {boolean(t.its_priority), enumeration(toolpath_type_name(t.its_type)), unset(),
-           t.its_technology ? ref(technology(*t.its_technology)) : unset(),
-           t.its_machine_functions ? ref(functions(*t.its_machine_functions)) : unset(),
-           opt_bool(t.its_direction), ref(basic), unset(), unset()}));
+      const InstanceId tech = t.its_technology ? technology(*t.its_technology) : 0;
+      const InstanceId fn = t.its_machine_functions ? functions(*t.its_machine_functions) : 0;
+      s_.begin("CUTTER_LOCATION_TRAJECTORY");
+      s_.boolean(t.its_priority);
+      s_.enumeration(toolpath_type_name(t.its_type));
+      s_.unset();
+      s_.opt_ref(tech);
+      s_.opt_ref(fn);
+      s_.opt_boolean(t.its_direction);
+      s_.ref(basic);
+      s_.unset();
+      s_.unset();
+      items.push_back(s_.end());
     }
-    return g_.add("TOOLPATH_LIST", {list_of_refs(items)});
+    s_.begin("TOOLPATH_LIST");
+    s_.refs(items);
+    return s_.end();
   }
 
   // ---- operations
-  std::vector<Value> machining_operation_attributes(const sn::MachiningOperation& op) {
-    const Value toolpath = op.its_toolpath ? ref(toolpath_list(*op.its_toolpath)) : unset();
-    const Value start = op.start_point ? ref(point(*op.start_point)) : unset();
-    return {toolpath, unset(), string(op.its_id), opt_real(op.retract_plane), start,
-            ref(tool(op.its_tool)), ref(technology(op.its_technology)), ref(functions(op.its_machine_functions)),
-            opt_real(op.overcut_length)};
+  InstanceId drilling_strategy(const sn::DrillingTypeOperation& op) {
+    if (!op.its_machining_strategy) return 0;
+    const auto& s = *op.its_machining_strategy;
+    s_.begin("DRILLING_TYPE_STRATEGY");
+    s_.opt_real(s.reduced_cut_at_start);
+    s_.opt_real(s.reduced_feed_at_start);
+    s_.opt_real(s.depth_of_start);
+    s_.opt_real(s.reduced_cut_at_end);
+    s_.opt_real(s.reduced_feed_at_end);
+    s_.opt_real(s.depth_of_end);
+    return s_.end();
   }
-  void drilling_attributes(std::vector<Value>& a, const sn::DrillingTypeOperation& op) {
-    a.push_back(opt_real(op.cutting_depth));
-    a.push_back(opt_real(op.previous_diameter));
-    a.push_back(opt_real(op.dwell_time_bottom));
-    a.push_back(opt_real(op.feed_on_retract));
-    if (op.its_machining_strategy) {
-      const auto& s = *op.its_machining_strategy;
-      a.push_back(ref(g_.add("DRILLING_TYPE_STRATEGY",
-          {opt_real(s.reduced_cut_at_start), opt_real(s.reduced_feed_at_start), opt_real(s.depth_of_start),
-           opt_real(s.reduced_cut_at_end), opt_real(s.reduced_feed_at_end), opt_real(s.depth_of_end)})));
-    } else {
-      a.push_back(unset());
-    }
+  void drilling_attributes(const sn::DrillingTypeOperation& op, InstanceId strategy) {
+    s_.opt_real(op.cutting_depth);
+    s_.opt_real(op.previous_diameter);
+    s_.opt_real(op.dwell_time_bottom);
+    s_.opt_real(op.feed_on_retract);
+    s_.opt_ref(strategy);
   }
-  void two5d_attributes(std::vector<Value>& a, const sn::Two5DMillingOperation& op, bool plane, bool side) {
-    a.push_back(unset());  // approach
-    a.push_back(unset());  // retract
-    a.push_back(op.its_machining_strategy ? strategy(*op.its_machining_strategy) : unset());
-    a.push_back(opt_real(op.axial_cutting_depth));
-    if (side) {
-      a.push_back(opt_real(op.radial_cutting_depth));
-      a.push_back(opt_real(op.allowance_side));
-    }
-    if (plane) a.push_back(opt_real(op.allowance_bottom));
-  }
-  Value strategy(const sn::Two5DMillingStrategy& s) {
-    auto cutmode = [](const std::optional<sn::CutmodeType>& c) {
-      return c ? enumeration(*c == sn::CutmodeType::Climb ? "CLIMB" : "CONVENTIONAL") : unset();
+  InstanceId milling_strategy(const sn::Two5DMillingOperation& op) {
+    if (!op.its_machining_strategy) return 0;
+    auto cutmode = [&](const std::optional<sn::CutmodeType>& c) {
+      c ? s_.enumeration(*c == sn::CutmodeType::Climb ? "CLIMB" : "CONVENTIONAL") : s_.unset();
     };
-    auto rot = [](const std::optional<sn::RotDirection>& r) { return r ? enumeration(*r == sn::RotDirection::Cw ? "CW" : "CCW") : unset(); };
-    auto dir = [&](const std::optional<sn::Direction>& d) { return d ? ref(direction(*d)) : unset(); };
-    return ref(std::visit(Overload{
-        [&](const sn::Unidirectional& u) { return g_.add("UNIDIRECTIONAL", {unset(), unset(), dir(u.feed_direction), cutmode(u.cutmode)}); },
-        [&](const sn::Bidirectional& b) {
-          return g_.add("BIDIRECTIONAL", {unset(), unset(), dir(b.feed_direction),
-                                          b.stepover_direction ? enumeration(*b.stepover_direction == sn::LeftOrRight::Left ? "LEFT" : "RIGHT") : unset(),
-                                          unset()});
+    auto rotation = [&](const std::optional<sn::RotDirection>& r) {
+      r ? s_.enumeration(*r == sn::RotDirection::Cw ? "CW" : "CCW") : s_.unset();
+    };
+    auto feed_direction = [&](const std::optional<sn::Direction>& d) { return d ? direction(*d) : InstanceId{0}; };
+    return std::visit(Overload{
+        [&](const sn::Unidirectional& u) {
+          const InstanceId dir = feed_direction(u.feed_direction);
+          s_.begin("UNIDIRECTIONAL");
+          s_.unset();
+          s_.unset();
+          s_.opt_ref(dir);
+          cutmode(u.cutmode);
+          return s_.end();
         },
-        [&](const sn::ContourParallel& c) { return g_.add("CONTOUR_PARALLEL", {unset(), unset(), rot(c.rotation_direction), cutmode(c.cutmode)}); },
-        [&](const sn::ContourSpiral& c) { return g_.add("CONTOUR_SPIRAL", {unset(), unset(), rot(c.rotation_direction), cutmode(c.cutmode)}); },
-        [&](const sn::CenterMilling&) { return g_.add("CENTER_MILLING", {unset(), unset()}); }}, s));
+        [&](const sn::Bidirectional& b) {
+          const InstanceId dir = feed_direction(b.feed_direction);
+          s_.begin("BIDIRECTIONAL");
+          s_.unset();
+          s_.unset();
+          s_.opt_ref(dir);
+          if (b.stepover_direction) {
+            s_.enumeration(*b.stepover_direction == sn::LeftOrRight::Left ? "LEFT" : "RIGHT");
+          } else {
+            s_.unset();
+          }
+          s_.unset();
+          return s_.end();
+        },
+        [&](const sn::ContourParallel& c) {
+          s_.begin("CONTOUR_PARALLEL");
+          s_.unset();
+          s_.unset();
+          rotation(c.rotation_direction);
+          cutmode(c.cutmode);
+          return s_.end();
+        },
+        [&](const sn::ContourSpiral& c) {
+          s_.begin("CONTOUR_SPIRAL");
+          s_.unset();
+          s_.unset();
+          rotation(c.rotation_direction);
+          cutmode(c.cutmode);
+          return s_.end();
+        },
+        [&](const sn::CenterMilling&) {
+          s_.begin("CENTER_MILLING");
+          s_.unset();
+          s_.unset();
+          return s_.end();
+        }},
+        *op.its_machining_strategy);
+  }
+  void two5d_attributes(const sn::Two5DMillingOperation& op, InstanceId strategy, bool plane, bool side) {
+    s_.unset();  // approach
+    s_.unset();  // retract
+    s_.opt_ref(strategy);
+    s_.opt_real(op.axial_cutting_depth);
+    if (side) {
+      s_.opt_real(op.radial_cutting_depth);
+      s_.opt_real(op.allowance_side);
+    }
+    if (plane) s_.opt_real(op.allowance_bottom);
   }
 
   InstanceId operation(sn::OperationRef r) {
-    if (auto it = operations_.find(r.index); it != operations_.end()) return it->second;
+    InstanceId& written = operations_.at(r.index);
+    if (written != 0) return written;
     const sn::Operation& op = p_.operation(r);
-    std::vector<Value> a = machining_operation_attributes(sn::machining_operation(op));
-    std::visit(Overload{
-        [&](const sn::FreeformOperation&) { a.insert(a.end(), {unset(), unset(), unset()}); },
-        [&](const sn::MultistepDrilling& o) {
-          drilling_attributes(a, o);
-          a.insert(a.end(), {real(o.retract_distance), real(o.first_depth), real(o.depth_of_step), opt_real(o.dwell_time_step)});
+    const sn::MachiningOperation& m = sn::machining_operation(op);
+    const InstanceId toolpath = m.its_toolpath ? toolpath_list(*m.its_toolpath) : 0;
+    const InstanceId start = m.start_point ? point(*m.start_point) : 0;
+    const InstanceId tool_id = tool(m.its_tool);
+    const InstanceId technology_id = technology(m.its_technology);
+    const InstanceId functions_id = functions(m.its_machine_functions);
+    written = std::visit(
+        [&](const auto& o) {
+          using O = std::decay_t<decltype(o)>;
+          // Instances the subtype's own attributes refer to come first.
+          InstanceId strategy = 0, waiting = 0;
+          if constexpr (std::is_base_of_v<sn::DrillingTypeOperation, O>) strategy = drilling_strategy(o);
+          if constexpr (std::is_base_of_v<sn::Two5DMillingOperation, O>) strategy = milling_strategy(o);
+          if constexpr (std::is_base_of_v<sn::BoringOperation, O>) waiting = o.waiting_position ? point(*o.waiting_position) : 0;
+
+          s_.begin(sn::entity_name(op));
+          s_.opt_ref(toolpath);
+          s_.unset();
+          s_.string(m.its_id);
+          s_.opt_real(m.retract_plane);
+          s_.opt_ref(start);
+          s_.ref(tool_id);
+          s_.ref(technology_id);
+          s_.ref(functions_id);
+          s_.opt_real(m.overcut_length);
+          if constexpr (std::is_same_v<O, sn::FreeformOperation>) {
+            s_.unset();
+            s_.unset();
+            s_.unset();
+          } else if constexpr (std::is_same_v<O, sn::MultistepDrilling>) {
+            drilling_attributes(o, strategy);
+            s_.real(o.retract_distance);
+            s_.real(o.first_depth);
+            s_.real(o.depth_of_step);
+            s_.opt_real(o.dwell_time_step);
+          } else if constexpr (std::is_base_of_v<sn::BoringOperation, O>) {
+            drilling_attributes(o, strategy);
+            s_.boolean(o.spindle_stop_at_bottom);
+            s_.opt_real(o.depth_of_testcut);
+            s_.opt_ref(waiting);
+          } else if constexpr (std::is_same_v<O, sn::Tapping>) {
+            drilling_attributes(o, strategy);
+            s_.boolean(o.compensation_chuck);
+          } else if constexpr (std::is_base_of_v<sn::DrillingTypeOperation, O>) {
+            drilling_attributes(o, strategy);
+          } else if constexpr (std::is_same_v<O, sn::PlaneRoughMilling> || std::is_same_v<O, sn::PlaneFinishMilling>) {
+            two5d_attributes(o, strategy, true, false);
+          } else if constexpr (std::is_same_v<O, sn::SideRoughMilling> || std::is_same_v<O, sn::SideFinishMilling>) {
+            two5d_attributes(o, strategy, false, true);
+          } else {
+            static_assert(std::is_base_of_v<sn::Two5DMillingOperation, O>);
+            two5d_attributes(o, strategy, true, true);
+          }
+          return s_.end();
         },
-        [&](const sn::BoringOperation& o) {
-          drilling_attributes(a, o);
-          a.insert(a.end(), {boolean(o.spindle_stop_at_bottom), opt_real(o.depth_of_testcut),
-                             o.waiting_position ? ref(point(*o.waiting_position)) : unset()});
-        },
-        [&](const sn::Tapping& o) {
-          drilling_attributes(a, o);
-          a.push_back(boolean(o.compensation_chuck));
-        },
-        [&](const sn::DrillingTypeOperation& o) { drilling_attributes(a, o); },
-        [&](const sn::PlaneRoughMilling& o) { two5d_attributes(a, o, true, false); },
-        [&](const sn::PlaneFinishMilling& o) { two5d_attributes(a, o, true, false); },
-        [&](const sn::SideRoughMilling& o) { two5d_attributes(a, o, false, true); },
-        [&](const sn::SideFinishMilling& o) { two5d_attributes(a, o, false, true); },
-        [&](const sn::BottomAndSideRoughMilling& o) { two5d_attributes(a, o, true, true); },
-        [&](const sn::BottomAndSideFinishMilling& o) { two5d_attributes(a, o, true, true); }},
         op);
-    const InstanceId id = g_.add(sn::entity_name(op), std::move(a));
-    operations_.emplace(r.index, id);
-    return id;
+    return written;
   }
 
   // ---- features
   InstanceId toleranced(const sn::TolerancedLengthMeasure& t) {
-    const InstanceId tol = g_.add("PLUS_MINUS_VALUE", {real(t.upper_limit), real(t.lower_limit), integer(t.significant_digits)});
-    return g_.add("TOLERANCED_LENGTH_MEASURE", {real(t.theoretical_size), ref(tol)});
+    s_.begin("PLUS_MINUS_VALUE");
+    s_.real(t.upper_limit);
+    s_.real(t.lower_limit);
+    s_.integer(t.significant_digits);
+    const InstanceId tolerance = s_.end();
+    s_.begin("TOLERANCED_LENGTH_MEASURE");
+    s_.real(t.theoretical_size);
+    s_.ref(tolerance);
+    return s_.end();
+  }
+  InstanceId hole_bottom(const sn::HoleBottomCondition& b) {
+    std::visit(Overload{[&](const sn::ThroughBottomCondition&) { s_.begin("THROUGH_BOTTOM_CONDITION"); },
+                        [&](const sn::FlatHoleBottom&) { s_.begin("FLAT_HOLE_BOTTOM"); },
+                        [&](const sn::ConicalHoleBottom& c) {
+                          s_.begin("CONICAL_HOLE_BOTTOM");
+                          s_.real(c.tip_angle);
+                          s_.unset();
+                        }},
+               b);
+    return s_.end();
   }
 
   InstanceId feature(sn::FeatureRef r) {
-    if (auto it = features_.find(r.index); it != features_.end()) return it->second;
-    InstanceId id = 0;
+    InstanceId& written = features_.at(r.index);
+    if (written != 0) return written;
     const sn::Feature& f = p_.feature(r);
-    std::vector<InstanceId> ops;
-    for (const auto& o : feature_operations_.at(r.index)) ops.push_back(operation(o));
-    auto common = [&](const sn::MachiningFeature& m) {
-      const InstanceId placement_id = placement(m.feature_placement, "FEATURE PLACEMENT");
-      const InstanceId depth_id = plane(m.depth, "DEPTH PLANE");
-      return std::vector<Value>{string(m.its_id), ref(workpiece_), list_of_refs(ops), ref(placement_id), ref(depth_id)};
+    std::vector<InstanceId>& ops = feature_operation_ids_;
+    ops.clear();
+    for (std::uint32_t k = feature_first_[r.index]; k < feature_first_[r.index + 1]; ++k) ops.push_back(operation(feature_ops_[k]));
+    if (cc2::is_cc2_feature(f)) {  // cc2_writer.cpp, sharing this writer's geometry
+      struct Geometry final : cc2::SharedGeometry {
+        explicit Geometry(Cc1Writer& writer) : w(writer) {}
+        InstanceId placement(const sn::Axis2Placement3d& a, std::string_view name) override { return w.placement(a, name); }
+        InstanceId plane(const sn::Plane& p, std::string_view name) override { return w.plane(p, name); }
+        InstanceId direction(const sn::Direction& d) override { return w.direction(d); }
+        InstanceId curve(const sn::CompositeCurve& c) override { return w.curve(c); }
+        InstanceId toleranced(const sn::TolerancedLengthMeasure& t) override { return w.toleranced(t); }
+        Cc1Writer& w;
+      } geometry(*this);
+      return written = cc2::write_feature(s_, geometry, f, workpiece_, ops);
+    }
+    // MACHINING_FEATURE's attributes; CC2 features are written by their own mapping (issue 4): a
+    // CC1 file carries them as toolpath features so it stays valid.
+    struct Common {
+      std::string_view id;
+      InstanceId placement, depth;
+    };
+    auto common = [&](const std::string& id, const sn::Axis2Placement3d& placement_value, const sn::Plane& depth) {
+      const InstanceId placement_id = placement(placement_value, "FEATURE PLACEMENT");
+      const InstanceId depth_id = plane(depth, "DEPTH PLANE");
+      return Common{id, placement_id, depth_id};
+    };
+    auto write_common = [&](std::string_view entity, const Common& c) {
+      s_.begin(entity);
+      s_.string(c.id);
+      s_.ref(workpiece_);
+      s_.refs(ops);
+      s_.ref(c.placement);
+      s_.ref(c.depth);
     };
     std::visit(Overload{
-        [&](const sn::ToolpathFeature& t) { id = g_.add("TOOLPATH_FEATURE", common(t)); },
         [&](const sn::RoundHole& h) {
-          auto a = common(h);
-          a.push_back(ref(toleranced(h.diameter)));
-          a.push_back(unset());
-          a.push_back(ref(std::visit(Overload{
-              [&](const sn::ThroughBottomCondition&) { return g_.add("THROUGH_BOTTOM_CONDITION", {}); },
-              [&](const sn::FlatHoleBottom&) { return g_.add("FLAT_HOLE_BOTTOM", {}); },
-              [&](const sn::ConicalHoleBottom& c) { return g_.add("CONICAL_HOLE_BOTTOM", {real(c.tip_angle), unset()}); }},
-              h.bottom_condition)));
-          id = g_.add("ROUND_HOLE", std::move(a));
+          const Common c = common(h.its_id, h.feature_placement, h.depth);
+          const InstanceId diameter = toleranced(h.diameter);
+          const InstanceId bottom = hole_bottom(h.bottom_condition);
+          write_common("ROUND_HOLE", c);
+          s_.ref(diameter);
+          s_.unset();
+          s_.ref(bottom);
         },
-        [&](const auto& other) {
-          // CC2 features are written by the feature_recognizer's mapping (issue 4); a CC1 file
-          // carries them as toolpath features so the file stays valid.
-          auto a = common_of(other, common);
-          id = g_.add("TOOLPATH_FEATURE", std::move(a));
+        [&](const sn::Region& g) {
+          write_common("TOOLPATH_FEATURE", common(g.its_id, g.feature_placement.value_or(sn::Axis2Placement3d{}), sn::Plane{}));
+        },
+        [&](const sn::MachiningFeature& m) {
+          write_common("TOOLPATH_FEATURE", common(m.its_id, m.feature_placement, m.depth));
         }},
         f);
-    features_.emplace(r.index, id);
-    return id;
-  }
-  template <class F, class Common>
-  std::vector<Value> common_of(const F& f, Common& common) {
-    if constexpr (std::is_base_of_v<sn::MachiningFeature, F>) {
-      return common(f);
-    } else {
-      sn::MachiningFeature m;
-      m.its_id = f.its_id;
-      if (f.feature_placement) m.feature_placement = *f.feature_placement;
-      return common(m);
-    }
+    return written = s_.end();
   }
 
   // ---- workplan
@@ -441,78 +620,119 @@ class Cc1Writer {
     const InstanceId secplane = plane(ws.its_secplane, "SECURITY PLANE");
     const InstanceId feature_id = feature(ws.its_feature);
     const InstanceId operation_id = operation(ws.its_operation);
-    return g_.add("MACHINING_WORKINGSTEP", {string(ws.its_id), ref(secplane), ref(feature_id), ref(operation_id), unset()});
+    s_.begin("MACHINING_WORKINGSTEP");
+    s_.string(ws.its_id);
+    s_.ref(secplane);
+    s_.ref(feature_id);
+    s_.ref(operation_id);
+    s_.unset();
+    return s_.end();
   }
   InstanceId write_executable(const sn::RapidMovement& r) {
     const InstanceId secplane = plane(r.its_secplane, "SECURITY PLANE");
-    const Value toolpath = r.its_toolpath ? ref(toolpath_list(*r.its_toolpath)) : unset();
-    return g_.add("RAPID_MOVEMENT", {string(r.its_id), ref(secplane), toolpath, unset()});
+    const InstanceId toolpath = r.its_toolpath ? toolpath_list(*r.its_toolpath) : 0;
+    s_.begin("RAPID_MOVEMENT");
+    s_.string(r.its_id);
+    s_.ref(secplane);
+    s_.opt_ref(toolpath);
+    s_.unset();
+    return s_.end();
   }
 
-  InstanceId write_workpiece(const sn::Workpiece& w, std::optional<InstanceId> rawpiece) {
-    Value bounding = unset();
+  InstanceId write_workpiece(const sn::Workpiece& w, InstanceId rawpiece) {
+    InstanceId bounding = 0;
     if (w.its_bounding_geometry) {
       const auto& b = *w.its_bounding_geometry;
       const InstanceId position = placement(b.position, w.its_id);
-      bounding = ref(g_.add("BLOCK", {string(w.its_id), ref(position), real(b.x), real(b.y), real(b.z)}));
+      s_.begin("BLOCK");
+      s_.string(w.its_id);
+      s_.ref(position);
+      s_.real(b.x);
+      s_.real(b.y);
+      s_.real(b.z);
+      bounding = s_.end();
     }
     std::vector<InstanceId> clamps;
     for (const auto& c : w.clamping_positions) clamps.push_back(point(c));
-    return g_.add("WORKPIECE", {string(w.its_id), unset(), opt_real(w.global_tolerance), opt_ref(rawpiece), unset(),
-                             bounding, list_of_refs(clamps)});
+    s_.begin("WORKPIECE");
+    s_.string(w.its_id);
+    s_.unset();
+    s_.opt_real(w.global_tolerance);
+    s_.opt_ref(rawpiece);
+    s_.unset();
+    s_.opt_ref(bounding);
+    s_.refs(clamps);
+    return s_.end();
   }
 
   InstanceId write_setup() {
     const sn::Setup& s = p_.setup;
-    const Value origin = s.its_origin ? ref(placement(*s.its_origin, s.its_id)) : unset();
+    const InstanceId origin = s.its_origin ? placement(*s.its_origin, s.its_id) : 0;
     const InstanceId secplane = plane(s.its_secplane, "SECURITY PLANE");
     const InstanceId wp_origin = placement(s.its_workpiece_setup.its_origin, p_.workpiece.its_id);
-    const InstanceId wp_setup = g_.add("WORKPIECE_SETUP", {ref(workpiece_), ref(wp_origin), unset(), unset(), list({})});
-    return g_.add("SETUP", {string(s.its_id), origin, ref(secplane), list_of_refs({wp_setup})});
+    s_.begin("WORKPIECE_SETUP");
+    s_.ref(workpiece_);
+    s_.ref(wp_origin);
+    s_.unset();
+    s_.unset();
+    s_.open_list();
+    s_.close_list();
+    const InstanceId wp_setup = s_.end();
+    s_.begin("SETUP");
+    s_.string(s.its_id);
+    s_.opt_ref(origin);
+    s_.ref(secplane);
+    s_.refs(std::array{wp_setup});
+    return s_.end();
   }
 
   const sn::Project& p_;
-  Emitter& g_;
+  InstanceStream& s_;
   InstanceId workpiece_ = 0;
-  std::vector<std::vector<sn::OperationRef>> feature_operations_;
-  InstanceId axis_directions_[6] = {0, 0, 0, 0, 0, 0};
-  std::map<PlacementKey, InstanceId> planes_, placements_;
-  std::map<std::uint32_t, InstanceId> tools_, technologies_, functions_, operations_, features_;
+  std::vector<std::uint32_t> feature_first_;
+  std::vector<sn::OperationRef> feature_ops_;
+  std::vector<InstanceId> tools_, technologies_, functions_, operations_, features_;  // 0: not written yet
+  std::map<PlacementKey, InstanceId> placements_, planes_;
+  part21::RecentInstances<3> points_{14}, directions_{10}, arc_placements_{10};
+  part21::RecentInstances<2> circles_{10};
+  // Scratch lists, one per level of nesting (curve <- toolpath list <- operation <- feature).
+  std::vector<InstanceId> polyline_points_, segment_ids_, trajectory_ids_, feature_operation_ids_;
 };
 
-}  // namespace
-
-namespace {
-Header header_of(const StepncWriteOptions& options) {
-  Header h;
-  h.description = options.description;
-  h.name = options.file_name;
-  h.schema = {"MACHINING_SCHEMA", "MILLING_SCHEMA"};
-  if (options.unix_time) h.time_stamp = time_stamp_of(*options.unix_time);
-  return h;
+std::string header_text(const StepncWriteOptions& options) {
+  part21::Graph header_only;
+  header_only.header.description = options.description;
+  header_only.header.name = options.file_name;
+  header_only.header.schema = {"MACHINING_SCHEMA", "MILLING_SCHEMA"};
+  if (options.unix_time) header_only.header.time_stamp = part21::time_stamp_of(*options.unix_time);
+  // The header as the generic writer writes it, up to the DATA section it opens.
+  std::string text = part21::write_part21(header_only);
+  const std::size_t data = text.rfind("DATA;\n");
+  if (data == std::string::npos) throw std::logic_error("write_stepnc: unexpected Part 21 writer output");
+  text.resize(data + 6);
+  return text;
 }
+
 }  // namespace
 
-part21::Graph stepnc_to_graph(const stepnc::Project& project, const StepncWriteOptions& options) {
-  Graph g;
-  g.header = header_of(options);
-  GraphEmitter emitter(g);
-  Cc1Writer(project, emitter).build();
-  return g;
+std::uint64_t write_stepnc(const stepnc::Project& project, const StepncWriteOptions& options,
+                           const std::function<void(std::string_view)>& write_chunk) {
+  InstanceStream stream(write_chunk);
+  stream.raw(header_text(options));
+  Cc1Writer(project, stream).build();
+  stream.raw("ENDSEC;\nEND-ISO-10303-21;\n");
+  return stream.finish();
 }
 
 std::string write_stepnc(const stepnc::Project& project, const StepncWriteOptions& options) {
-  // The header as the generic writer writes it (an empty DATA section follows it there).
-  Graph header_only;
-  header_only.header = header_of(options);
-  std::string out = write_part21(header_only);
-  const std::size_t data = out.rfind("DATA;\n");
-  if (data == std::string::npos) throw std::logic_error("write_stepnc: unexpected Part 21 writer output");
-  out.resize(data + 6);
-  TextEmitter emitter(out);
-  Cc1Writer(project, emitter).build();
-  out += "ENDSEC;\nEND-ISO-10303-21;\n";
-  return out;
+  std::string text;
+  write_stepnc(project, options, [&](std::string_view chunk) { text += chunk; });
+  return text;
+}
+
+part21::Graph stepnc_to_graph(const stepnc::Project& project, const StepncWriteOptions& options) {
+  // The instances exactly as written: the file text read back.
+  return part21::read_part21(write_stepnc(project, options), options.file_name).graph;
 }
 
 }  // namespace ncbridge::step_writer

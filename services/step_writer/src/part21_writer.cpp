@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -7,6 +8,7 @@
 #include <unordered_map>
 
 #include "ncbridge/step_writer/part21_writer.hpp"
+#include "part21_text.hpp"
 #include "utf8.hpp"
 
 namespace ncbridge::step_writer::part21 {
@@ -18,25 +20,69 @@ void append_hex(std::string& out, std::uint32_t value, int digits) {
   for (int shift = 4 * (digits - 1); shift >= 0; shift -= 4) out += kHex[(value >> shift) & 0xF];
 }
 
-void append_real(std::string& out, double value) {
+constexpr double kPow10[] = {1, 10, 100, 1e3, 1e4, 1e5, 1e6};
+
+// Values in [1e-3, 1e5) with at most six decimals (most program coordinates): the shortest
+// round-trip text is the decimal with the fewest decimals that reads back as the value, and
+// std::to_chars writes it in fixed notation (never longer than the exponent form there). Found
+// without to_chars; nullptr when the value is not such a decimal.
+char* write_short_decimal(char* first, double value) {
+  const double magnitude = std::fabs(value);
+  if (!(magnitude >= 1e-3 && magnitude < 1e5)) return nullptr;
+  for (int k = 0; k < 7; ++k) {
+    const double scaled = std::nearbyint(magnitude * kPow10[k]);
+    if (scaled / kPow10[k] != magnitude) continue;
+    auto digits = static_cast<std::uint64_t>(scaled);
+    char reversed[24];
+    int n = 0;
+    do {
+      reversed[n++] = static_cast<char>('0' + digits % 10);
+      digits /= 10;
+    } while (digits != 0);
+    while (n <= k) reversed[n++] = '0';  // at least one digit before the point
+    char* p = first;
+    if (value < 0) *p++ = '-';
+    for (int i = n - 1; i >= k; --i) *p++ = reversed[i];
+    *p++ = '.';
+    for (int i = k - 1; i >= 0; --i) *p++ = reversed[i];
+    return p;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+char* write_real(char* first, double value) {
   if (!std::isfinite(value)) throw std::invalid_argument("Part 21 cannot represent a NaN or infinite real");
+  if (char* end = write_short_decimal(first, value)) return end;
   char buf[64];
   auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);  // shortest round-trip form
   std::string_view text(buf, static_cast<std::size_t>(end - buf));
   std::size_t e = text.find('e');
   std::string_view mantissa = text.substr(0, e);
-  out += mantissa;
-  if (mantissa.find('.') == std::string_view::npos) out += '.';
+  char* p = std::copy(mantissa.begin(), mantissa.end(), first);
+  if (mantissa.find('.') == std::string_view::npos) *p++ = '.';
   if (e != std::string_view::npos) {
     std::string_view exponent = text.substr(e + 1);
-    out += 'E';
+    *p++ = 'E';
     if (!exponent.empty() && exponent.front() == '+') exponent.remove_prefix(1);
-    out += exponent;
+    p = std::copy(exponent.begin(), exponent.end(), p);
   }
+  return p;
+}
+
+void append_real(std::string& out, double value) {
+  char buf[kMaxRealChars];
+  out.append(buf, write_real(buf, value));
 }
 
 void append_string(std::string& out, std::string_view utf8) {
   out += '\'';
+  if (std::all_of(utf8.begin(), utf8.end(), [](char c) { return c >= 0x20 && c < 0x7F && c != '\'' && c != '\\'; })) {
+    out += utf8;  // nothing to escape
+    out += '\'';
+    return;
+  }
   std::size_t i = 0;
   while (i < utf8.size()) {
     unsigned char c = static_cast<unsigned char>(utf8[i]);
@@ -63,6 +109,8 @@ void append_string(std::string& out, std::string_view utf8) {
   }
   out += '\'';
 }
+
+namespace {
 
 using IdMap = std::unordered_map<InstanceId, InstanceId>;
 

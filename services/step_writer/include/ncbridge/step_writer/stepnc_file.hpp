@@ -9,6 +9,7 @@
 // check); writing that Graph with write_part21 differs only in line breaks.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -29,6 +30,10 @@ struct StepncWriteOptions {
 // The instance graph of a project (header filled from the options).
 part21::Graph stepnc_to_graph(const stepnc::Project& project, const StepncWriteOptions& options = {});
 std::string write_stepnc(const stepnc::Project& project, const StepncWriteOptions& options = {});
+// The same text handed to `write_chunk` piece by piece (about 1 MB each) as it is made, so the
+// whole file is never held in memory (e.g. straight into an AtomicFile); returns its size in bytes.
+std::uint64_t write_stepnc(const stepnc::Project& project, const StepncWriteOptions& options,
+                           const std::function<void(std::string_view)>& write_chunk);
 
 struct StepncReadResult {
   stepnc::Project project;
