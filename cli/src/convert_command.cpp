@@ -14,7 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "cc2_output.hpp"
 #include "commands.hpp"
+#include "html_report.hpp"
 #include "ncbridge/cc1_builder/cc1_builder.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
@@ -38,6 +40,7 @@ struct ConvertArguments {
   std::string level = "cc1";
   std::string output;
   std::string report;
+  std::string html;
   std::string subroutine_path;
   std::optional<double> security_plane;
 };
@@ -138,54 +141,105 @@ nlohmann::ordered_json report_of(const ConvertArguments& args, const stepnc::Pro
               {"timings_ms", timings}};
 }
 
+// A Part 21 file (a CC1 file to raise to CC2) rather than a program: by its first line.
+bool is_part21_file(const std::string& path) {
+  std::ifstream in(path);
+  std::string first;
+  std::getline(in, first);
+  return first.rfind("ISO-10303-21;", 0) == 0;
+}
+
 int run_convert(const ConvertArguments& args) {
   const auto t0 = Clock::now();
-  cc1_builder::Options options;
-  options.tools = setup::read_tool_list(args.tools);
-  options.stock = setup::read_stock(args.stock);
-  options.security_plane_z = args.security_plane;
-  interpreter::Options interp;
-  interp.dialect = dialect_of(args.dialect);
-  interp.tools = options.tools;
-  std::stringstream dirs(args.subroutine_path);
-  for (std::string d; std::getline(dirs, d, ':');) {
-    if (!d.empty()) interp.subroutine_path.emplace_back(d);
+  const bool part21_input = is_part21_file(args.program);
+  if (!part21_input && (args.tools.empty() || args.stock.empty())) {
+    throw InputError({args.program, 0, 0}, "converting a program needs --tools and --stock");
   }
+  std::vector<cc1_builder::Warning> warnings;
+  std::uint64_t calls = 0;
+  stepnc::Project project;
+  std::optional<setup::Stock> stock;
+  if (!args.stock.empty()) stock = setup::read_stock(args.stock);
+  Clock::time_point t_interpret, t_built;
+  Clock::duration builder_spent{};
+  if (part21_input) {  // the CC1 model read back: everything recognition uses is in the file
+    t_interpret = Clock::now();
+    auto read = step_writer::read_stepnc_file(args.program);
+    for (const auto& d : read.warnings) warnings.push_back({d.where, d.message});
+    project = std::move(read.project);
+    t_built = Clock::now();
+  } else {
+    cc1_builder::Options options;
+    options.tools = setup::read_tool_list(args.tools);
+    options.stock = *stock;
+    options.security_plane_z = args.security_plane;
+    interpreter::Options interp;
+    interp.dialect = dialect_of(args.dialect);
+    interp.tools = options.tools;
+    std::stringstream dirs(args.subroutine_path);
+    for (std::string d; std::getline(dirs, d, ':');) {
+      if (!d.empty()) interp.subroutine_path.emplace_back(d);
+    }
 
-  cc1_builder::Cc1Builder builder(options);
-  TimedSink sink(builder, isatty(STDERR_FILENO) != 0);
-  const auto t_interpret = Clock::now();
-  try {
-    interpreter::interpret_file(args.program, interp, sink);
-  } catch (...) {
-    sink.clear();
-    throw;
+    cc1_builder::Cc1Builder builder(options);
+    TimedSink sink(builder, isatty(STDERR_FILENO) != 0);
+    t_interpret = Clock::now();
+    try {
+      interpreter::interpret_file(args.program, interp, sink);
+    } catch (...) {
+      sink.clear();
+      throw;
+    }
+    t_built = Clock::now();
+    warnings = builder.warnings();
+    calls = builder.calls_seen();
+    project = builder.take_project();
+    builder_spent = sink.spent();
   }
-  const auto t_built = Clock::now();
-  const std::vector<cc1_builder::Warning> warnings = builder.warnings();
-  const std::uint64_t calls = builder.calls_seen();
-  const stepnc::Project project = builder.take_project();
+  // CC2: the features recognised in the CC1 model, with their workingsteps (cc2_output.hpp).
+  std::optional<Cc2Output> cc2;
+  if (args.level == "cc2") cc2 = build_cc2(project, stock, args.program);
+  const auto t_recognized = Clock::now();
 
   step_writer::StepncWriteOptions write;
   write.file_name = std::filesystem::path(args.output).filename().string();
+  if (cc2) write.description = {"ISO 14649 CC2 program written by ncbridge"};
   // The text streams into the temporary file as it is made; "output" is the fsync and rename.
   step_writer::AtomicFile file(args.output);
-  const std::uint64_t bytes = step_writer::write_stepnc(project, write, [&](std::string_view chunk) { file.write(chunk); });
+  const std::uint64_t bytes = step_writer::write_stepnc(cc2 ? cc2->project : project, write, [&](std::string_view chunk) { file.write(chunk); });
   const auto t_written = Clock::now();
   file.commit();
   const auto t_done = Clock::now();
 
+  if (cc2) {
+    for (const auto& w : cc2->warnings) {
+      cc1_builder::Warning warning;
+      warning.where.file = args.program;
+      warning.message = w;
+      warnings.push_back(std::move(warning));
+    }
+  }
   for (const auto& w : warnings) std::fprintf(stderr, "%s: warning: %s\n", w.where.to_string().c_str(), w.message.c_str());
   if (!args.report.empty()) {
-    const double builder_ms = ms(sink.spent());
-    const nlohmann::ordered_json timings{{"read_inputs", ms(t_interpret - t0)},
+    const double builder_ms = ms(builder_spent);
+    nlohmann::ordered_json timings{{"read_inputs", ms(t_interpret - t0)},
                                  {"interpreter", ms(t_built - t_interpret) - builder_ms},
-                                 {"cc1_builder", builder_ms},
-                                 {"step_writer", ms(t_written - t_built)},
-                                 {"output", ms(t_done - t_written)},
-                                 {"total", ms(t_done - t0)}};
-    const auto report = report_of(args, project, warnings, calls, bytes, timings);
+                                 {"cc1_builder", builder_ms}};
+    if (cc2) timings["feature_recognizer"] = ms(t_recognized - t_built);
+    timings["step_writer"] = ms(t_written - t_recognized);
+    timings["output"] = ms(t_done - t_written);
+    timings["total"] = ms(t_done - t0);
+    auto report = report_of(args, cc2 ? cc2->project : project, warnings, calls, bytes, timings);
+    if (cc2) report["features"] = cc2_features_json(*cc2);
     step_writer::write_file_atomically(args.report, report.dump(2) + "\n");
+  }
+  if (!args.html.empty()) {
+    if (!cc2) throw InputError({args.program, 0, 0}, "--html needs --level cc2 (it draws the recognised features)");
+    HtmlReportInput page;
+    page.title = std::filesystem::path(args.program).filename().string();
+    page.cc2 = &*cc2;
+    for (const auto& w : warnings) page.warnings.push_back(w.where.to_string() + ": " + w.message);
+    step_writer::write_file_atomically(args.html, html_report(page));
   }
   return 0;
 }
@@ -195,14 +249,15 @@ int run_convert(const ConvertArguments& args) {
 void add_convert_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ConvertArguments>();
   CLI::App* cmd = app.add_subcommand("convert", "Convert a part program into an ISO 14649 (STEP-NC) Part 21 file");
-  cmd->add_option("program", args->program, "Part program")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML, docs/formats/stock.md)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("program", args->program, "Part program, or a CC1 Part 21 file to raise to --level cc2")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md); needed for a program")->check(CLI::ExistingFile);
+  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML, docs/formats/stock.md); needed for a program")->check(CLI::ExistingFile);
   cmd->add_option("--dialect", args->dialect, "Program dialect")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));
-  cmd->add_option("--level", args->level, "Conformance class of the output")->check(CLI::IsMember({"cc1"}));
+  cmd->add_option("--level", args->level, "Conformance class of the output")->check(CLI::IsMember({"cc1", "cc2"}));
   cmd->add_option("-o,--output", args->output, "Part 21 file to write")->required();
   cmd->add_option("--report", args->report, "Also write a JSON report (docs/formats/report.md)");
+  cmd->add_option("--html", args->html, "Also write an HTML page: top view, toolpaths, features (--level cc2)");
   cmd->add_option("--security-plane", args->security_plane, "Security plane Z in mm (default: the highest rapid)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
   cmd->callback([args, &exit_code]() { exit_code = run_convert(*args); });

@@ -1,8 +1,9 @@
 // Part 21 instance graph -> ISO 14649 model: the inverse of cc1_writer.cpp, and tolerant of the
 // shapes real files have (NIST: tool bodies with a taper, bare POLYLINE toolpaths, strategies).
-// What the model cannot hold yet (CC2 features and operations other than the drilling family)
-// is reported as a warning; a file without a PROJECT, or with a reference to the wrong kind of
-// entity, is an InputError naming the instance's line.
+// CC1 and CC2 (the 2.5D milling features and operations of ISO 14649-10/-11). What the model
+// cannot hold (bosses, approach strategies, other feature kinds) is reported as a warning; a
+// file without a PROJECT, or with a reference to the wrong kind of entity, is an InputError
+// naming the instance's line.
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -336,6 +337,50 @@ class Cc1Reader {
     return op;
   }
 
+  // 2.5D milling: MILLING_TYPE_OPERATION's approach and retract (not modelled), the strategy,
+  // then the depths and allowances the subtype has.
+  template <class Op>
+  Op two5d(const Instance& i, bool plane, bool side) {
+    Op op;
+    machining_operation(i, op);
+    if (!attr(i, 9).is_unset() || !attr(i, 10).is_unset()) warn(i, "approach/retract strategies are not kept");
+    if (!attr(i, 11).is_unset()) op.its_machining_strategy = strategy(instance(reference(i, 11)));
+    std::size_t n = 12;
+    op.axial_cutting_depth = opt_number(i, n++);
+    if (side) {
+      op.radial_cutting_depth = opt_number(i, n++);
+      op.allowance_side = opt_number(i, n++);
+    }
+    if (plane) op.allowance_bottom = opt_number(i, n++);
+    return op;
+  }
+  std::optional<sn::Two5DMillingStrategy> strategy(const Instance& i) {
+    const std::string& e = i.entity();
+    auto cutmode = [&](std::size_t n) -> std::optional<sn::CutmodeType> {
+      if (n >= i.attributes().size() || !attr(i, n).is_enumeration()) return std::nullopt;
+      return attr(i, n).as_enumeration() == "CLIMB" ? sn::CutmodeType::Climb : sn::CutmodeType::Conventional;
+    };
+    auto rot = [&](std::size_t n) -> std::optional<sn::RotDirection> {
+      if (n >= i.attributes().size() || !attr(i, n).is_enumeration()) return std::nullopt;
+      return attr(i, n).as_enumeration() == "CW" ? sn::RotDirection::Cw : sn::RotDirection::Ccw;
+    };
+    auto dir = [&](std::size_t n) -> std::optional<sn::Direction> {
+      if (n >= i.attributes().size() || attr(i, n).is_unset()) return std::nullopt;
+      return direction(reference(i, n), i);
+    };
+    if (e == "UNIDIRECTIONAL") return sn::Unidirectional{dir(2), cutmode(3)};
+    if (e == "BIDIRECTIONAL" || e == "BIDIRECTIONAL_MILLING") {
+      std::optional<sn::LeftOrRight> side;
+      if (attr(i, 3).is_enumeration()) side = attr(i, 3).as_enumeration() == "LEFT" ? sn::LeftOrRight::Left : sn::LeftOrRight::Right;
+      return sn::Bidirectional{dir(2), side};
+    }
+    if (e == "CONTOUR_PARALLEL") return sn::ContourParallel{rot(2), cutmode(3)};
+    if (e == "CONTOUR_SPIRAL") return sn::ContourSpiral{rot(2), cutmode(3)};
+    if (e == "CENTER_MILLING") return sn::CenterMilling{};
+    warn(i, "milling strategy " + e + " is not kept");
+    return std::nullopt;
+  }
+
   std::optional<sn::OperationRef> operation(InstanceId id, const Instance& from) {
     if (auto it = operations_.find(id); it != operations_.end()) return it->second;
     const Instance& i = instance(id);
@@ -368,8 +413,20 @@ class Cc1Reader {
       drilling(i, t);
       t.compensation_chuck = flag(i, 14);
       op = t;
+    } else if (e == "PLANE_ROUGH_MILLING") {
+      op = two5d<sn::PlaneRoughMilling>(i, true, false);
+    } else if (e == "PLANE_FINISH_MILLING") {
+      op = two5d<sn::PlaneFinishMilling>(i, true, false);
+    } else if (e == "SIDE_ROUGH_MILLING") {
+      op = two5d<sn::SideRoughMilling>(i, false, true);
+    } else if (e == "SIDE_FINISH_MILLING") {
+      op = two5d<sn::SideFinishMilling>(i, false, true);
+    } else if (e == "BOTTOM_AND_SIDE_ROUGH_MILLING") {
+      op = two5d<sn::BottomAndSideRoughMilling>(i, true, true);
+    } else if (e == "BOTTOM_AND_SIDE_FINISH_MILLING") {
+      op = two5d<sn::BottomAndSideFinishMilling>(i, true, true);
     } else {
-      warn(i, "operation " + e + " is not read yet (CC2 milling operations come with the feature recogniser): its workingstep is left out");
+      warn(i, "operation " + e + " is not read (not part of the model): its workingstep is left out");
       (void)from;
       return std::nullopt;
     }
@@ -380,6 +437,57 @@ class Cc1Reader {
   }
 
   // ---- features
+  sn::TolerancedLengthMeasure toleranced(InstanceId id, const Instance& from) {
+    const Instance& d = expect(id, {"TOLERANCED_LENGTH_MEASURE"}, from);
+    sn::TolerancedLengthMeasure t;
+    t.theoretical_size = number(d, 0);
+    const Instance& tol = instance(reference(d, 1));
+    if (tol.entity() == "PLUS_MINUS_VALUE") {
+      t.upper_limit = number(tol, 0);
+      t.lower_limit = number(tol, 1);
+      t.significant_digits = static_cast<int>(attr(tol, 2).as_integer());
+    } else {
+      warn(tol, "tolerance kind not kept (read as +/-0)");
+    }
+    return t;
+  }
+  std::optional<sn::Axis2Placement3d> opt_placement(const Instance& i, std::size_t n) const {
+    if (attr(i, n).is_unset()) return std::nullopt;
+    return placement(reference(i, n), i);
+  }
+  sn::LinearPath linear_path(InstanceId id, const Instance& from) {
+    const Instance& i = expect(id, {"LINEAR_PATH"}, from);
+    return {opt_placement(i, 0), toleranced(reference(i, 1), i), direction(reference(i, 2), i)};
+  }
+  sn::LinearProfile linear_profile(const Instance& i) {
+    const Instance& length = expect(reference(i, 1), {"NUMERIC_PARAMETER"}, i);
+    return {opt_placement(i, 0), number(length, 1)};
+  }
+  sn::ClosedProfile closed_profile(InstanceId id, const Instance& from) {
+    const Instance& i = expect(id, {"RECTANGULAR_CLOSED_PROFILE", "CIRCULAR_CLOSED_PROFILE", "GENERAL_CLOSED_PROFILE"}, from);
+    if (i.entity() == "RECTANGULAR_CLOSED_PROFILE") {
+      return sn::RectangularClosedProfile{opt_placement(i, 0), toleranced(reference(i, 1), i), toleranced(reference(i, 2), i)};
+    }
+    if (i.entity() == "CIRCULAR_CLOSED_PROFILE") return sn::CircularClosedProfile{opt_placement(i, 0), toleranced(reference(i, 1), i)};
+    return sn::GeneralClosedProfile{opt_placement(i, 0), curve(reference(i, 1), i)};
+  }
+  sn::OpenProfile open_profile(InstanceId id, const Instance& from) {
+    const Instance& i = expect(id, {"LINEAR_PROFILE", "GENERAL_PROFILE"}, from);
+    if (i.entity() == "LINEAR_PROFILE") return linear_profile(i);
+    return sn::GeneralProfile{opt_placement(i, 0), curve(reference(i, 1), i)};
+  }
+  template <class Pocket>
+  void pocket(const Instance& i, Pocket& p) {
+    if (!list(i, 5).empty()) warn(i, "bosses are not kept");
+    p.slope = opt_number(i, 6);
+    const Instance& bottom = instance(reference(i, 7));
+    if (bottom.entity() == "THROUGH_POCKET_BOTTOM_CONDITION") p.bottom_condition = sn::ThroughPocketBottomCondition{};
+    else if (bottom.entity() == "PLANAR_POCKET_BOTTOM_CONDITION") p.bottom_condition = sn::PlanarPocketBottomCondition{};
+    else warn(bottom, "pocket bottom " + bottom.entity() + " read as planar");
+    if (!attr(i, 8).is_unset()) p.planar_radius = toleranced(reference(i, 8), i);
+    if (!attr(i, 9).is_unset()) p.orthogonal_radius = toleranced(reference(i, 9), i);
+  }
+
   std::optional<sn::FeatureRef> feature(InstanceId id, const Instance& from) {
     if (auto it = features_.find(id); it != features_.end()) return it->second;
     const Instance& i = instance(id);
@@ -396,23 +504,73 @@ class Cc1Reader {
     } else if (i.entity() == "ROUND_HOLE") {
       sn::RoundHole h;
       common(h);
-      const Instance& d = expect(reference(i, 5), {"TOLERANCED_LENGTH_MEASURE"}, i);
-      h.diameter.theoretical_size = number(d, 0);
-      const Instance& tol = instance(reference(d, 1));
-      if (tol.entity() == "PLUS_MINUS_VALUE") {
-        h.diameter.upper_limit = number(tol, 0);
-        h.diameter.lower_limit = number(tol, 1);
-        h.diameter.significant_digits = static_cast<int>(attr(tol, 2).as_integer());
-      } else {
-        warn(tol, "tolerance kind not kept (read as +/-0)");
-      }
+      h.diameter = toleranced(reference(i, 5), i);
       const Instance& bottom = instance(reference(i, 7));
       if (bottom.entity() == "THROUGH_BOTTOM_CONDITION") h.bottom_condition = sn::ThroughBottomCondition{};
       else if (bottom.entity() == "CONICAL_HOLE_BOTTOM") h.bottom_condition = sn::ConicalHoleBottom{number(bottom, 0)};
       else h.bottom_condition = sn::FlatHoleBottom{};
       feature = h;
+    } else if (i.entity() == "PLANAR_FACE") {
+      sn::PlanarFace p;
+      common(p);
+      p.course_of_travel = linear_path(reference(i, 5), i);
+      p.removal_boundary = linear_profile(expect(reference(i, 6), {"LINEAR_PROFILE"}, i));
+      if (!attr(i, 7).is_unset()) p.face_boundary = closed_profile(reference(i, 7), i);
+      if (!list(i, 8).empty()) warn(i, "bosses are not kept");
+      feature = p;
+    } else if (i.entity() == "CLOSED_POCKET") {
+      sn::ClosedPocket p;
+      common(p);
+      pocket(i, p);
+      p.feature_boundary = closed_profile(reference(i, 10), i);
+      feature = p;
+    } else if (i.entity() == "OPEN_POCKET") {
+      sn::OpenPocket p;
+      common(p);
+      pocket(i, p);
+      p.open_boundary = open_profile(reference(i, 10), i);
+      if (!attr(i, 11).is_unset()) p.wall_boundary = open_profile(reference(i, 11), i);
+      feature = p;
+    } else if (i.entity() == "SLOT") {
+      sn::Slot s;
+      common(s);
+      s.course_of_travel = linear_path(reference(i, 5), i);
+      s.swept_shape = open_profile(reference(i, 6), i);
+      static const std::map<std::string, sn::SlotEndType, std::less<>> kEnds{
+          {"OPEN_SLOT_END_TYPE", sn::SlotEndType::Open}, {"RADIUSED_SLOT_END_TYPE", sn::SlotEndType::Radiused},
+          {"FLAT_SLOT_END_TYPE", sn::SlotEndType::Flat}, {"LOOP_SLOT_END_TYPE", sn::SlotEndType::Loop},
+          {"WOODRUFF_SLOT_END_TYPE", sn::SlotEndType::Woodruff}};
+      for (const Value& v : list(i, 7)) {
+        const Instance& end = instance(reference_in(v, i));
+        auto k = kEnds.find(end.entity());
+        if (k == kEnds.end()) fail(i, "refers to #" + std::to_string(end.id) + " " + end.entity() + ", expected a slot_end_type");
+        s.end_conditions.push_back(k->second);
+      }
+      feature = s;
+    } else if (i.entity() == "STEP") {
+      sn::Step s;
+      common(s);
+      s.open_boundary = linear_path(reference(i, 5), i);
+      if (!attr(i, 6).is_unset()) warn(i, "the step's wall boundary is not kept");
+      feature = s;
+    } else if (i.entity() == "GENERAL_OUTSIDE_PROFILE") {
+      sn::GeneralOutsideProfile p;
+      common(p);
+      p.profile_swept_shape = linear_path(reference(i, 5), i);
+      const Instance& boundary = expect(reference(i, 6), {"GENERAL_CLOSED_PROFILE", "GENERAL_PROFILE"}, i);
+      p.closed = boundary.entity() == "GENERAL_CLOSED_PROFILE";
+      p.feature_boundary = curve(reference(boundary, 1), boundary);
+      feature = p;
+    } else if (i.entity() == "REGION_PROJECTION") {
+      sn::Region g;
+      g.its_id = text(i, 0);
+      if (!attr(i, 3).is_unset()) g.feature_placement = placement(reference(i, 3), i);
+      g.proj_curve = curve(reference(i, 4), i);
+      g.proj_dir = direction(reference(i, 5), i);
+      g.depth = toleranced(reference(i, 6), i);
+      feature = g;
     } else {
-      warn(i, "feature " + i.entity() + " is not read yet (CC2 features come with the feature recogniser): its workingsteps are left out");
+      warn(i, "feature " + i.entity() + " is not read (not part of the model): its workingsteps are left out");
       (void)from;
       return std::nullopt;
     }

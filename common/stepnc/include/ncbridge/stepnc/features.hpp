@@ -133,10 +133,15 @@ struct GeneralOutsideProfile : MachiningFeature {
   friend bool operator==(const GeneralOutsideProfile&, const GeneralOutsideProfile&) = default;
 };
 
-// REGION (a freeform area; placement optional in the schema, kept here as the bounding frame).
+// REGION (a freeform area; placement optional in the schema, kept here as the bounding frame),
+// written as its subtype REGION_PROJECTION: the area's outline projected along proj_dir down to
+// `depth` below the placement.
 struct Region {
   std::string its_id;
   std::optional<Axis2Placement3d> feature_placement;
+  CompositeCurve proj_curve;
+  Direction proj_dir{0, 0, -1};
+  TolerancedLengthMeasure depth;
   friend bool operator==(const Region&, const Region&) = default;
 };
 
