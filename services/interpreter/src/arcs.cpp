@@ -46,6 +46,10 @@ void Executor::arc(const BlockCommand& b, int motion, const Pose& end) {
   if (s_.plane != Plane::XY && s_.plane != Plane::XZ && s_.plane != Plane::YZ) {
     fail(b.g_column[kGMotion], "Cannot do an arc in planes G17.1, G18.1, or G19.1");
   }
+  if (arc_not_allowed_) {
+    fail(b.g_column[kGMotion] ? b.g_column[kGMotion] : 1,
+         "The move just after exiting cutter compensation mode must be straight, not an arc");
+  }
   bool ijk = b.has('i') || b.has('j') || b.has('k');
   if (!b.has('r') && !ijk) fail(b.g_column[kGMotion], "R i j k words all missing for arc");
   if (b.has('r') && ijk) fail(b.g_column[kGMotion], "Mixed radius-ijk format for arc");
@@ -158,7 +162,13 @@ void Executor::arc(const BlockCommand& b, int motion, const Pose& end) {
     double normal = end.*ax.normal - cur.*ax.normal;
     set_inverse_time_rate(std::hypot(radius * sweep, normal), b);
   }
-  emit(ArcFeed{e1, e2, center1, center2, turn, end.*ax.normal, end.a, end.b, end.c, end.u, end.v, end.w});
+  const ArcFeed arc{e1, e2, center1, center2, turn, end.*ax.normal, end.a, end.b, end.c, end.u, end.v, end.w};
+  if (comp_.active()) {
+    if (comp_.radius() > 0.0) comp_moved_ = true;
+    comp_.arc(arc, source_);
+  } else {
+    emit(arc);
+  }
   s_.position = end;
 }
 

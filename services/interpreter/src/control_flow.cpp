@@ -95,6 +95,7 @@ void ControlFlowRunner::run(std::unique_ptr<TextSource> source, const std::strin
   executor_.start();
   for (;;) {
     if (!read_line(false)) {
+      executor_.end_of_file();
       if (!frames_.empty()) fail(0, "File ended inside subroutine (missing endsub)");
       if (options_.require_program_end) {
         throw InputError({file_name(), line_, 1}, "File ended with no percent sign or program end");
@@ -114,6 +115,7 @@ bool ControlFlowRunner::run_block() {
     }
     if (percent_mode_ && current_file_ == 0) {
       // LinuxCNC prints FINISH() here; the canonical model has no such call yet.
+      executor_.end_of_file();
       return true;
     }
     return false;

@@ -9,7 +9,12 @@ namespace ncbridge::interpreter {
 using namespace canonical;
 
 Executor::Executor(const Options& options, Parameters& parameters, Sink& sink)
-    : options_(options), params_(parameters), sink_(sink) {}
+    : options_(options),
+      params_(parameters),
+      sink_(sink),
+      comp_(sink, [this](const Source& source) {
+        return SourceLocation{file_ ? *file_ : std::string(), source.line, comp_column_};
+      }) {}
 
 Executor::~Executor() = default;
 
@@ -20,10 +25,17 @@ void Executor::fail(std::uint32_t column, const std::string& message) const {
 
 void Executor::emit(Data data) {
   Call call{std::move(data), source_, cycle_tag_};
-  sink_.call(call);
+  if (comp_.active()) {
+    comp_.other(call);
+  } else {
+    sink_.call(call);
+  }
 }
 
-void Executor::flush() {}
+void Executor::end_of_file() {
+  comp_.reset();
+  s_.comp_side = Side::Off;
+}
 
 Pose Executor::to_units(const Pose& mm) const {
   double k = s_.mm_per_unit();
@@ -75,6 +87,7 @@ bool Executor::execute(const BlockCommand& b, const Source& source, const std::s
   file_ = &file;
   line_ = b.line;
   cycle_tag_.reset();
+  comp_column_ = b.g[kGMotion] != -1 ? b.g_column[kGMotion] : 1;
   check_block(b);
 
   // STEP 1: comment or message
@@ -207,7 +220,7 @@ void Executor::do_dwell(const BlockCommand& b) {
 void Executor::do_plane(int g) {
   Plane p = g == 170 ? Plane::XY : g == 180 ? Plane::XZ : g == 190 ? Plane::YZ
           : g == 171 ? Plane::UV : g == 181 ? Plane::UW : Plane::VW;
-  if (s_.comp_side != Side::Off && p != Plane::XY && p != Plane::XZ) {
+  if (s_.comp_side != Side::Off && p != s_.plane) {
     fail(0, "Cannot change planes with cutter radius compensation on");
   }
   s_.plane = p;
@@ -216,7 +229,6 @@ void Executor::do_plane(int g) {
 
 void Executor::do_units(int g) {
   Units u = g == 200 ? Units::Inches : Units::Millimeters;
-  if (s_.comp_side != Side::Off) fail(0, "Cannot change units with cutter radius compensation on");
   if (u != s_.units) {
     double k = (u == Units::Millimeters) ? 25.4 : 1.0 / 25.4;
     Pose& p = s_.position;
@@ -231,6 +243,9 @@ void Executor::do_units(int g) {
 }
 
 void Executor::do_control_mode(const BlockCommand& b, int g) {
+  if (s_.comp_side != Side::Off) {
+    fail(b.g_column[kGControl], "Cannot change control mode with cutter radius compensation on");
+  }
   if (g == 610) {
     s_.control = MotionControlMode::ExactPath;
     emit(SetMotionControlMode{MotionControlMode::ExactPath, 0});
@@ -328,21 +343,54 @@ void Executor::do_coolant(const BlockCommand& b) {
   }
 }
 
+// G40, G41/G42 (radius from the tool table: the D word's tool, else the tool in the spindle),
+// G41.1/G42.1 (D is the diameter itself). LinuxCNC convert_cutter_compensation_on/off.
 void Executor::do_cutter_comp(const BlockCommand& b, int g) {
   if (g == 400) {
-    emit(Comment{"interpreter: cutter radius compensation off"});
+    const bool was_active = comp_.active();
+    const bool moved = was_active && comp_.radius() > 0.0 && comp_moved_;
+    comp_.stop(source_);
+    if (was_active) s_.position = comp_.programmed_position();
+    if (moved) arc_not_allowed_ = true;
     s_.comp_side = Side::Off;
+    s_.comp_radius = 0;
+    comp_moved_ = false;
     return;
   }
+  const std::uint32_t col = b.g_column[kGCutterComp];
+  if (s_.plane != Plane::XY) fail(col, "Cutter radius compensation allowed only in XY, XZ planes");
+  if (s_.comp_side != Side::Off) fail(col, "Cannot turn cutter radius comp on when on");
+  const double radius = comp_radius_of_tool(b, g);
+  const Side side = (g == 410 || g == 411) ? Side::Left : Side::Right;
+  comp_.set_length_units(s_.units);
+  comp_.set_position(s_.position);
+  comp_.start(side, radius, source_);
+  s_.comp_side = comp_.side();
+  s_.comp_radius = comp_.radius();
+  comp_moved_ = false;
+}
+
+// The compensation radius in program units; negative when the tool table gives a negative
+// diameter (the compensator then swaps the side, as LinuxCNC does).
+double Executor::comp_radius_of_tool(const BlockCommand& b, int g) {
+  const std::uint32_t col = b.g_column[kGCutterComp];
+  const std::string code = g == 410 || g == 411 ? "G41" : "G42";
+  if (g == 411 || g == 421) {
+    if (!b.has('d')) fail(col, code + ".1 with no D word");
+    return b.get('d') / 2.0;
+  }
+  int tool = s_.tool_in_spindle;
   if (b.has('d')) {
-    int tool = static_cast<int>(std::lround(b.get('d')));
+    const double d = b.get('d');
+    tool = static_cast<int>(d + 0.5);
+    if (std::fabs(tool - d) >= 0.0001) fail(b.col('d'), code + " requires D word to be a whole number");
     if (tool < 0) fail(b.col('d'), "Negative D word tool radius index used");
     if (tool != 0 && options_.tools.find(tool) == nullptr) {
       fail(b.col('d'), "Requested tool " + std::to_string(tool) + " not found in the tool table");
     }
   }
-  fail(b.g_column[kGCutterComp],
-       "cutter radius compensation (G41/G42) is not yet supported by this interpreter");
+  const setup::Tool* t = tool == 0 ? nullptr : options_.tools.find(tool);
+  return t == nullptr ? 0.0 : t->diameter / s_.mm_per_unit() / 2.0;
 }
 
 }  // namespace ncbridge::interpreter

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "block_command.hpp"
+#include "cutter_compensation.hpp"
 #include "modal_state.hpp"
 #include "ncbridge/canonical/call.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
@@ -31,7 +32,9 @@ class Executor final : public ComputedParameters {
   // Emits a call now (tagged with the current source).
   void emit(canonical::Data data);
   void set_source(const canonical::Source& source) { source_ = source; }
-  void flush();  // pending (cutter compensation) output
+  // The program stopped without M2/M30 (end of file, closing `%`): LinuxCNC drops the move
+  // cutter compensation still holds back.
+  void end_of_file();
 
   const ModalState& state() const { return s_; }
   std::optional<double> computed(std::string_view name) const override;
@@ -54,6 +57,7 @@ class Executor final : public ComputedParameters {
   void do_overrides(const BlockCommand& b);
   void do_coolant(const BlockCommand& b);
   void do_cutter_comp(const BlockCommand& b, int g);
+  double comp_radius_of_tool(const BlockCommand& b, int g);
 
   // tools_and_spindle.cpp
   void do_tool_select(const BlockCommand& b);
@@ -100,6 +104,14 @@ class Executor final : public ComputedParameters {
   std::optional<canonical::CycleTag> cycle_tag_;
   const std::string* file_ = nullptr;
   std::uint32_t line_ = 0;
+
+  // Cutter radius compensation (G41/G42): while active, moves go through it as programmed
+  // geometry and every other call through comp_.other(), which holds back what LinuxCNC holds
+  // back behind the pending move. s_.position stays the programmed point.
+  CutterCompensation comp_;
+  std::uint32_t comp_column_ = 0;  // column of the block's motion code, for comp errors
+  bool comp_moved_ = false;        // a move was made with compensation on (radius > 0)
+  bool arc_not_allowed_ = false;   // just after G40: the next move must be straight
 };
 
 }  // namespace ncbridge::interpreter

@@ -53,6 +53,11 @@ void Executor::straight(bool feed, const Pose& end, const BlockCommand* b) {
       }
       set_inverse_time_rate(length, *b);
     }
+  }
+  if (comp_.active()) {
+    if (comp_.radius() > 0.0) comp_moved_ = true;
+    comp_.straight(feed, end, source_);
+  } else if (feed) {
     emit(StraightFeed{end});
   } else {
     emit(StraightTraverse{end});
@@ -61,10 +66,12 @@ void Executor::straight(bool feed, const Pose& end, const BlockCommand* b) {
 }
 
 void Executor::do_motion(const BlockCommand& b, int motion, bool g53) {
+  if (g53 && s_.comp_side != Side::Off) fail(b.g_column[kGNonModal], "Cannot use g53 with cutter radius comp");
   if (!is_canned_cycle(motion)) s_.cycle_initial_level_valid = false;
   switch (motion) {
     case 0: {
       Pose end = find_end(b, g53);
+      arc_not_allowed_ = false;
       straight(false, end, &b);
       break;
     }
@@ -79,6 +86,7 @@ void Executor::do_motion(const BlockCommand& b, int motion, bool g53) {
         fail(b.g_column[kGMotion], "F word missing with inverse time G1 move");
       }
       Pose end = find_end(b, g53);
+      arc_not_allowed_ = false;
       straight(true, end, &b);
       break;
     }

@@ -86,6 +86,9 @@ void Executor::do_g10(const BlockCommand& b) {
   if (l == 2 || l == 20) {
     if (p < 0 || p > 9) fail(b.col('p'), "P value out of range with G10 L" + std::to_string(l));
     int system = p == 0 ? s_.coord_system : p;
+    if (system == s_.coord_system && s_.comp_side != Side::Off) {
+      fail(b.g_column[kGNonModal], "Cannot change the active coordinate system with cutter radius compensation on");
+    }
     Pose& target = s_.g5x_mm[static_cast<std::size_t>(system)];
     Pose old = origin_mm();
     for (int axis = 0; axis < 9; ++axis) {
@@ -121,6 +124,10 @@ void Executor::do_g10(const BlockCommand& b) {
 }
 
 void Executor::do_home(const BlockCommand& b, int g) {
+  if (s_.comp_side != Side::Off) {
+    fail(b.g_column[kGNonModal], (g == 281 || g == 301) ? "Cannot set reference point with cutter compensation in effect"
+                                                        : "Cannot use g28 or g30 with cutter radius comp");
+  }
   double k = s_.mm_per_unit();
   Pose& home = (g == 280 || g == 281) ? s_.g28_mm : s_.g30_mm;
   if (g == 281 || g == 301) {
@@ -151,6 +158,7 @@ void Executor::do_axis_offsets(const BlockCommand& b, int g) {
   Pose old = origin_mm();
   switch (g) {
     case 920: {
+      if (s_.comp_side != Side::Off) fail(b.g_column[kGNonModal], "Cannot change axis offsets with cutter radius comp");
       if (!b.has_axis()) fail(b.g_column[kGNonModal], "All axes missing with G92");
       Pose g5x = s_.g5x_mm[static_cast<std::size_t>(s_.coord_system)];
       for (int axis = 0; axis < 9; ++axis) {

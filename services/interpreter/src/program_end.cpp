@@ -7,6 +7,8 @@ using namespace canonical;
 
 bool Executor::do_stop(const BlockCommand& b) {
   int m = b.m[kMStop];
+  // The move cutter compensation holds back goes out first (LinuxCNC convert_stop).
+  comp_.flush();
   if (m == 0) {
     emit(ProgramStop{});
     return false;
@@ -20,7 +22,10 @@ bool Executor::do_stop(const BlockCommand& b) {
     emit(ProgramStop{});
     return false;
   }
-  // M2 / M30: back to G54 without G92 shift... LinuxCNC resets the origin to coordinate system 1.
+  // M2 / M30: compensation off without an exit move; LinuxCNC resets the origin to coordinate
+  // system 1.
+  comp_.reset();
+  s_.comp_side = Side::Off;
   Pose old = origin_mm();
   s_.coord_system = 1;
   apply_origin_change(old);
@@ -41,7 +46,6 @@ bool Executor::do_stop(const BlockCommand& b) {
     s_.feed_override = true;
   }
   s_.speed_override = true;
-  s_.comp_side = Side::Off;
   emit(StopSpindleTurning{0});
   s_.spindle = Direction::Stopped;
   emit(SetSpindleMode{0, 0.0});

@@ -69,6 +69,9 @@ void Executor::do_spindle_mode(const BlockCommand& b, int g) {
 }
 
 void Executor::do_tool_length_offset(const BlockCommand& b, int g) {
+  if (s_.comp_side != Side::Off) {
+    fail(b.g_column[kGToolLength], "Cannot change tool offset with cutter radius compensation on");
+  }
   double k = s_.mm_per_unit();
   Pose offset_mm{};
   if (g == 490) {
