@@ -57,6 +57,8 @@ template <> struct NameOf<ProgramStop> { static constexpr std::string_view value
 template <> struct NameOf<ProgramEnd> { static constexpr std::string_view value = "PROGRAM_END"; };
 template <> struct NameOf<PalletShuttle> { static constexpr std::string_view value = "PALLET_SHUTTLE"; };
 template <> struct NameOf<OnReset> { static constexpr std::string_view value = "ON_RESET"; };
+template <> struct NameOf<WaitSpindleOrientComplete> { static constexpr std::string_view value = "WAIT_SPINDLE_ORIENT_COMPLETE"; };
+template <> struct NameOf<Finish> { static constexpr std::string_view value = "FINISH"; };
 }  // namespace
 
 std::string_view name_of(const Data& data) {

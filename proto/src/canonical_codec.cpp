@@ -15,7 +15,7 @@ namespace {
 namespace w = ncbridge::pb;
 
 // Every alternative of Data has a case below; a new alternative must be added here too.
-static_assert(std::variant_size_v<Data> == 53, "canonical::Data changed: update canonical.proto and this codec");
+static_assert(std::variant_size_v<Data> == 55, "canonical::Data changed: update canonical.proto and this codec");
 
 [[noreturn]] void malformed(const std::string& what) {
   throw InputError({"<canonical batch>", 0, 0}, what);
@@ -130,6 +130,12 @@ struct DataEncoder {
   void operator()(const ProgramEnd&) { out.mutable_program_end(); }
   void operator()(const PalletShuttle&) { out.mutable_pallet_shuttle(); }
   void operator()(const OnReset&) { out.mutable_on_reset(); }
+  void operator()(const WaitSpindleOrientComplete& d) {
+    auto* m = out.mutable_wait_spindle_orient_complete();
+    m->set_spindle(d.spindle);
+    m->set_timeout(d.timeout);
+  }
+  void operator()(const Finish&) { out.mutable_finish(); }
 };
 
 void put_call(const Call& call, w::Call& out) {
@@ -247,6 +253,11 @@ Data get_data(const w::Call& in, const CallContext& at) {
     case C::kProgramEnd: return ProgramEnd{};
     case C::kPalletShuttle: return PalletShuttle{};
     case C::kOnReset: return OnReset{};
+    case C::kWaitSpindleOrientComplete: {
+      const auto& m = in.wait_spindle_orient_complete();
+      return WaitSpindleOrientComplete{m.spindle(), m.timeout()};
+    }
+    case C::kFinish: return Finish{};
     case C::DATA_NOT_SET: break;
   }
   bad_call(at, "no canonical function (unknown or missing call data)");

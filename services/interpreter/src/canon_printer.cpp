@@ -60,8 +60,14 @@ void print_pose6(Out& o, const Pose& p) { o.reals({p.x, p.y, p.z, p.a, p.b, p.c}
 
 void format(Out& o, const Data& data) {
   // rs274 spells this one without the final H
-  if (std::holds_alternative<StartSpeedFeedSynch>(data)) o << "START_SPEED_FEED_SYNC";
-  else o << name_of(data);
+  if (std::holds_alternative<StartSpeedFeedSynch>(data)) {
+    o << "START_SPEED_FEED_SYNC";
+  } else if (const auto* wait = std::get_if<WaitSpindleOrientComplete>(&data)) {
+    o << "SPINDLE.";  // rs274: SPINDLE.<n>.WAIT_ORIENT_COMPLETE(timeout)
+    o.integer(wait->spindle) << ".WAIT_ORIENT_COMPLETE";
+  } else {
+    o << name_of(data);
+  }
   o << '(';
   std::visit(
       [&o](const auto& d) {
@@ -146,6 +152,8 @@ void format(Out& o, const Data& data) {
           o.integer(d.slot);
         } else if constexpr (std::is_same_v<T, ChangeToolNumber>) {
           o.integer(d.number);
+        } else if constexpr (std::is_same_v<T, WaitSpindleOrientComplete>) {
+          o.real(d.timeout);
         } else if constexpr (std::is_same_v<T, Comment> || std::is_same_v<T, Message>) {
           o << '"' << d.text << '"';
         }

@@ -114,8 +114,9 @@ bool ControlFlowRunner::run_block() {
       return false;
     }
     if (percent_mode_ && current_file_ == 0) {
-      // LinuxCNC prints FINISH() here; the canonical model has no such call yet.
       executor_.end_of_file();
+      executor_.set_source(Source{current_file_, line_, -1, 0});
+      executor_.emit(Finish{});
       return true;
     }
     return false;

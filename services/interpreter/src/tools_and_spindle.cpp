@@ -52,8 +52,23 @@ void Executor::do_spindle(const BlockCommand& b) {
       emit(StopSpindleTurning{0});
       s_.spindle = Direction::Stopped;
       break;
-    default:
-      fail(b.m_column[kMSpindle], "M19 (spindle orientation) is not supported by this interpreter");
+    default: {
+      // M19: orient when R or P is given, wait when Q is (LinuxCNC convert_m).
+      if (b.has('r') && (b.get('r') < 0.0 || b.get('r') > 360.0)) {
+        fail(b.col('r'), "R value must be within 0..360 with M19");
+      }
+      int mode = 0;
+      if (b.has('p')) {
+        const double p = b.get('p');
+        mode = static_cast<int>(std::lround(p));
+        if (p != mode || mode < 0 || mode > 2) fail(b.col('p'), "P value must be 0,1,or 2 with M19");
+      }
+      if (b.has('q') && b.get('q') <= 0.0) fail(b.col('q'), "Q word with M19 requires a value > 0");
+      if (b.has('r') || b.has('p')) emit(OrientSpindle{0, b.has('r') ? b.get('r') : 0.0, mode});
+      if (b.has('q')) emit(WaitSpindleOrientComplete{0, b.get('q')});
+      s_.spindle = Direction::Stopped;
+      break;
+    }
   }
 }
 

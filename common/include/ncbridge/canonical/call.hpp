@@ -5,8 +5,15 @@
 // dialect) emits a stream of ncbridge::canonical::Call into a Sink; the cc1_builder consumes it.
 // Names follow the canonical function names so a reader can look them up. Lengths are in the
 // units set by the latest USE_LENGTH_UNITS, angles in degrees, feed in units/min (G94),
-// as LinuxCNC's canon layer receives them. Coordinates are absolute in the canonical frame
-// (G5x + G92 + tool length offsets applied, as the interpreter hands them to the machine).
+// as LinuxCNC's canon layer receives them.
+//
+// Coordinates are absolute positions in the PROGRAM frame, as LinuxCNC's interpreter hands them
+// to its canon layer (and as rs274 prints them): incremental words, G53 and unit changes are
+// already resolved, but the work offset, the G92 offset, the XY rotation and the tool length
+// offset are NOT applied. They are announced separately, when they change, by SET_G5X_OFFSET,
+// SET_G92_OFFSET, SET_XY_ROTATION and USE_TOOL_LENGTH_OFFSET; the machine position of a point
+// is the point rotated about the work origin by the XY rotation, plus the G5x and G92 offsets,
+// plus the tool length offset.
 //
 // The wire form is proto/canonical.proto (see canonical/proto_codec.hpp).
 #include <array>
@@ -27,7 +34,8 @@ struct Source {
 };
 
 // For calls produced by a canned cycle (G73, G81..G89): which cycle made them, with what.
-// All lengths in the canonical frame and current units, like the calls themselves.
+// Positions (x, y, clearance, r, z; k for G87) are absolute program-frame coordinates in the
+// current units, like the calls themselves (incremental words already resolved); q is a length.
 struct CycleTag {
   std::uint32_t cycle_id = 0;   // 1, 2, ...: one per hole (each repeat of an L-repeat counts)
   std::uint16_t g_code_x10 = 0; // 730, 810, 820, 830, 840, 841 (G84.1? LinuxCNC: G74), 850..890
@@ -101,6 +109,7 @@ struct StopSpindleTurning { int spindle; };
 struct SetSpindleMode { int spindle; double css_maximum; };  // 0 = constant rpm
 struct OrientSpindle { int spindle; double orientation; int mode; };
 struct SpindleRetract {};
+struct WaitSpindleOrientComplete { int spindle; double timeout; };  // M19 Q: seconds
 
 // ---- Tool
 struct UseToolLengthOffset { Pose offset; };
@@ -131,6 +140,7 @@ struct ProgramStop {};
 struct ProgramEnd {};
 struct PalletShuttle {};
 struct OnReset {};
+struct Finish {};  // the closing `%` of a %-delimited program (LinuxCNC prints FINISH())
 
 using Data = std::variant<
     UseLengthUnits, SetG5xOffset, SetG92Offset, SetXyRotation, SelectPlane, SetTraverseRate,
@@ -145,7 +155,9 @@ using Data = std::variant<
     Comment, Message, FloodOn, FloodOff, MistOn, MistOff,
     EnableFeedOverride, DisableFeedOverride, EnableSpeedOverride, DisableSpeedOverride,
     EnableAdaptiveFeed, DisableAdaptiveFeed, EnableFeedHold, DisableFeedHold,
-    OptionalProgramStop, ProgramStop, ProgramEnd, PalletShuttle, OnReset>;
+    OptionalProgramStop, ProgramStop, ProgramEnd, PalletShuttle, OnReset,
+    // appended later; new alternatives go at the end so existing indices stay put
+    WaitSpindleOrientComplete, Finish>;
 
 struct Call {
   Data data;
