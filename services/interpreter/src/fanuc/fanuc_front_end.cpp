@@ -376,6 +376,7 @@ class Runner {
   int plane_ = 17;
   std::optional<double> cycle_r_, cycle_z_, cycle_q_, cycle_p_;
   std::optional<double> last_r_, last_q_;
+  double initial_z_ = 0;
 };
 
 std::size_t Runner::add_file(ProgramText text) {
@@ -526,20 +527,28 @@ bool Runner::run_statement() {
 void Runner::jump_to_sequence(double n, std::uint32_t column, std::size_t in_file) {
   long target = std::lround(n);
   const File& f = files_[in_file];
-  auto [first, last] = f.sequence_numbers.equal_range(target);
-  if (first == last) m_.fail(column, "GOTO " + std::to_string(target) + ": no block N" + std::to_string(target));
-  // the first N after the current block, else the first in the program
-  std::size_t best = first->second;
-  for (auto it = first; it != last; ++it) {
-    if (it->second >= pc_) {
-      best = it->second;
-      break;
-    }
+  // The search stays in the current program (from its O line to the next one): forward from
+  // the current block, then from the program's start.
+  std::size_t begin = 0, end = f.text.size();
+  for (const auto& [number, line] : f.programs) {
+    if (line < pc_ && line >= begin) begin = line;
   }
+  for (const auto& [number, line] : f.programs) {
+    if (line >= pc_ && line < end) end = line;
+  }
+  auto [first, last] = f.sequence_numbers.equal_range(target);
+  std::optional<std::size_t> best;
+  for (auto it = first; it != last; ++it) {
+    if (it->second >= pc_ && it->second < end && (!best || it->second < *best)) best = it->second;
+  }
+  for (auto it = first; it != last && !best; ++it) {
+    if (it->second >= begin && it->second < end) best = it->second;
+  }
+  if (!best) m_.fail(column, "GOTO " + std::to_string(target) + ": no block N" + std::to_string(target) + " in this program");
   // leaving loops whose range the jump leaves is what the controller does implicitly
-  while (!loops_.empty() && loops_.back().file == in_file && best < loops_.back().pc) loops_.pop_back();
+  while (!loops_.empty() && loops_.back().file == in_file && *best < loops_.back().pc) loops_.pop_back();
   file_ = in_file;
-  pc_ = best;
+  pc_ = *best;
 }
 
 std::size_t Runner::find_program(long number, std::size_t& start, std::uint32_t column) {
@@ -664,6 +673,8 @@ bool Runner::run_block() {
     if (e == nullptr) m_.fail(g.column, "G" + lowering::code_key(g.v) + " is not a " + table_.dialect + " G code ncbridge supports");
     const std::string& meta = e->meta;
     if (e->cycle) {
+      bool was_cycle = motion_ == 73 || motion_ == 74 || motion_ == 76 || (motion_ >= 81 && motion_ <= 89);
+      if (!was_cycle) initial_z_ = m_.position().z;  // the initial level G91 R is measured from
       motion_ = *e->cycle;
     } else if (meta == "rapid" || meta == "linear" || meta == "circular_cw" || meta == "circular_ccw") {
       motion_ = static_cast<int>(*e->rs274);
@@ -969,7 +980,7 @@ void Runner::lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w) {
   if (repeats == 0) return;  // K0: store the cycle data, drill nothing
 
   Point3 here = m_.position();
-  double r_abs = incremental_ ? here.z + *cycle_r_ : *cycle_r_;
+  double r_abs = incremental_ ? initial_z_ + *cycle_r_ : *cycle_r_;
   double z_abs = incremental_ ? r_abs + *cycle_z_ : *cycle_z_;
   double dx = 0, dy = 0;
   Point3 hole = here;

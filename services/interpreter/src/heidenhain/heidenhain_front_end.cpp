@@ -363,6 +363,14 @@ class Reader {
       skip();
       if (pos_ >= s_.size()) return;
       std::size_t start = pos_;
+      if (out.keyword == "CHF" && out.words.empty() &&
+          (lowering::is_digit(s_[pos_]) || s_[pos_] == '.' || s_[pos_] == '+' || s_[pos_] == 'Q')) {
+        HWord size;  // CHF 2: the chamfer length has no address
+        size.column = static_cast<std::uint32_t>(start + 1);
+        size.value = value(out.exprs);
+        out.words.push_back(size);
+        continue;
+      }
       if (!lowering::is_alpha(s_[pos_])) fail(start, std::string("Unexpected character '") + s_[pos_] + "'");
       std::string name;
       while (pos_ < s_.size() && lowering::is_alpha(s_[pos_])) {
@@ -442,6 +450,7 @@ class Runner {
   std::size_t pc_ = 0;
   std::vector<Call> calls_;
   std::map<std::string, std::size_t> labels_;
+  std::map<std::size_t, int> section_repeats_;  // CALL LBL .. REP line -> repeats left
 
   double feed_ = 0;              // the last programmed F (control units)
   double pole_x_ = 0, pole_y_ = 0;
@@ -559,10 +568,25 @@ bool Runner::step() {
     }
     case Kind::CallLabel: {
       std::size_t target = find_label(b);
-      int repeats = 0;
-      if (const HWord* rep = find(b, "REP")) repeats = static_cast<int>(std::lround(eval(b, rep->value)));
+      if (const HWord* rep = find(b, "REP")) {
+        // program section repeat: back to LBL n, REP more times, then on after this block
+        if (target >= index) m_.fail(b.column, "CALL LBL ... REP repeats a section: the LBL must come before it");
+        auto it = section_repeats_.find(index);
+        if (it == section_repeats_.end()) {
+          int repeats = static_cast<int>(std::lround(eval(b, rep->value)));
+          if (repeats < 0) m_.fail(rep->column, "REP must not be negative");
+          it = section_repeats_.emplace(index, repeats).first;
+        }
+        if (it->second > 0) {
+          --it->second;
+          pc_ = target + 1;
+        } else {
+          section_repeats_.erase(it);
+        }
+        return true;
+      }
       if (calls_.size() >= 32) m_.fail(b.column, "Too many nested label calls");
-      calls_.push_back(Call{pc_, target + 1, repeats});
+      calls_.push_back(Call{pc_, target + 1, 0});
       pc_ = target + 1;
       return true;
     }
@@ -993,7 +1017,8 @@ void Runner::cycle_call(std::uint32_t column) {
     dwell = v.count("dwell_bottom") ? v["dwell_bottom"] : 0.0;
     feed_rate = get("plunge_feed");
     clearance = r;
-    if (peck > 0 && peck < std::fabs(r - bottom) - 1e-9) code = 83;
+    // a plunging depth of at least the depth is plain drilling (FreeCAD's post writes INCR = DEPTH)
+    if (peck > 0 && peck < std::fabs(depth) - 1e-9) code = 83;
     else if (dwell > 0) code = 82;
     nb.g(98, column);
   } else {

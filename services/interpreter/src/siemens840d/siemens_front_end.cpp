@@ -621,12 +621,7 @@ bool Runner::run_block(SBlock& b) {
   if (auto d = value_of("D")) {
     // D0: no tool offset; D1..: the offsets of the active tool
     if (*d == 0) nb.g(49, words["D"]->column);
-    else {
-      nb.g(43, words["D"]->column);
-      int tool = m_.state().tool_in_spindle;  // or the tool this block selects
-      for (const auto& w : nb.words) if (w.letter == 't') tool = static_cast<int>(w.value);
-      nb.add('h', tool, words["D"]->column);
-    }
+    else nb.g(43, words["D"]->column);  // the length of the tool in the spindle (after this block's M6)
   }
   if (g4) {
     double seconds = 0;
@@ -771,6 +766,7 @@ bool Runner::run_block(SBlock& b) {
         }
         if (have_centre) {
           m_.put_xy_arc(nb, cw, end.x, end.y, z, cx, cy, col);
+          if (auto turn = value_of("TURN"); turn && *turn > 0) nb.add('p', std::lround(*turn) + 1, words["TURN"]->column);
           double rx = end.x - cx, ry = end.y - cy, l = std::hypot(rx, ry);
           if (l > 0) { tangent_ = cw ? Point3{ry / l, -rx / l, 0} : Point3{-ry / l, rx / l, 0}; have_tangent_ = true; }
         }

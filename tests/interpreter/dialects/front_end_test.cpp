@@ -1,0 +1,236 @@
+// Dialect front-ends through the library API: detection, error locations (file, line, column)
+// and single constructs whose canonical result is known by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "ncbridge/common/error.hpp"
+#include "ncbridge/interpreter/dialect_detect.hpp"
+#include "ncbridge/interpreter/interpreter.hpp"
+
+namespace {
+
+using ncbridge::InputError;
+using ncbridge::canonical::Call;
+using ncbridge::interpreter::Dialect;
+
+class Collect final : public ncbridge::canonical::Sink {
+ public:
+  void call(const Call& c) override { calls.push_back(c); }
+  std::vector<Call> calls;
+  // end points of the feed and traverse moves, and arcs' end points
+  std::vector<std::array<double, 3>> ends() const {
+    std::vector<std::array<double, 3>> out;
+    for (const auto& c : calls) {
+      if (auto* f = std::get_if<ncbridge::canonical::StraightFeed>(&c.data)) out.push_back({f->end.x, f->end.y, f->end.z});
+      if (auto* t = std::get_if<ncbridge::canonical::StraightTraverse>(&c.data)) out.push_back({t->end.x, t->end.y, t->end.z});
+      if (auto* a = std::get_if<ncbridge::canonical::ArcFeed>(&c.data)) out.push_back({a->first_end, a->second_end, a->axis_end_point});
+    }
+    return out;
+  }
+};
+
+Collect run(const std::string& text, Dialect dialect, const std::string& name = "test.prog") {
+  ncbridge::interpreter::Options options;
+  options.dialect = dialect;
+  Collect sink;
+  ncbridge::interpreter::interpret_text(text, name, options, sink);
+  return sink;
+}
+
+InputError error_of(const std::string& text, Dialect dialect) {
+  try {
+    run(text, dialect);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for:\n" << text;
+  return InputError({}, "");
+}
+
+bool near(const std::array<double, 3>& p, double x, double y, double z) {
+  return std::fabs(p[0] - x) < 1e-6 && std::fabs(p[1] - y) < 1e-6 && std::fabs(p[2] - z) < 1e-6;
+}
+
+// ---- detection
+
+TEST(DialectDetection, NamesTheDialectAndItsEvidence) {
+  using ncbridge::interpreter::detect_dialect;
+  EXPECT_EQ(detect_dialect("0 BEGIN PGM X MM\n1 L X+10 FMAX\n").dialect, Dialect::Heidenhain);
+  EXPECT_EQ(detect_dialect("N10 G0 X0\nN20 T=\"MILL\" M6\n").dialect, Dialect::Siemens840D);
+  EXPECT_EQ(detect_dialect("N10 R1=5\nN20 G1 X=R1\n").dialect, Dialect::Siemens840D);
+  EXPECT_EQ(detect_dialect("%\nO1234\nG0 X1.\nM30\n%\n").dialect, Dialect::Fanuc);
+  EXPECT_EQ(detect_dialect("#1=5\nWHILE [#1 GT 0] DO 1\n").dialect, Dialect::Fanuc);
+  EXPECT_EQ(detect_dialect("(Post Processor: PathScripts.post.mach3_mach4_post)\nG0 X0\n").dialect, Dialect::Mach3);
+  EXPECT_EQ(detect_dialect("o100 sub\no100 endsub\nM2\n").dialect, Dialect::Rs274Ngc);
+  auto plain = detect_dialect("G0 X1 Y2\nM2\n");
+  EXPECT_EQ(plain.dialect, Dialect::Rs274Ngc);
+  EXPECT_NE(plain.reason.find("assumed"), std::string::npos);
+  auto fanuc = detect_dialect("%\n\nO0001 (PART)\n");
+  EXPECT_NE(fanuc.reason.find("line 3"), std::string::npos) << fanuc.reason;
+}
+
+TEST(DialectDetection, NamesRoundTrip) {
+  for (Dialect d : {Dialect::Rs274Ngc, Dialect::Fanuc, Dialect::Mach3, Dialect::Siemens840D, Dialect::Heidenhain,
+                    Dialect::Auto}) {
+    Dialect back = Dialect::Rs274Ngc;
+    ASSERT_TRUE(ncbridge::interpreter::parse_dialect_name(ncbridge::interpreter::dialect_name(d), back));
+    EXPECT_EQ(back, d);
+  }
+  Dialect unused;
+  EXPECT_FALSE(ncbridge::interpreter::parse_dialect_name("sinumerik", unused));
+}
+
+// ---- Fanuc
+
+TEST(Fanuc, DimensionWordsWithoutDecimalPointAreLeastIncrements) {
+  auto sink = run("G21 G90 G0 X100 Y25. Z1000\nM30\n", Dialect::Fanuc);
+  ASSERT_EQ(sink.ends().size(), 1u);
+  EXPECT_TRUE(near(sink.ends()[0], 0.1, 25.0, 1.0));
+}
+
+TEST(Fanuc, PolarCoordinatesAboutTheLocalOrigin) {
+  auto sink = run("G21 G90 G52 X10. Y10.\nG16\nG0 X5. Y90.\nY180.\nG15\nM30\n", Dialect::Fanuc);
+  auto e = sink.ends();
+  ASSERT_EQ(e.size(), 2u);
+  EXPECT_TRUE(near(e[0], 10.0, 15.0, 0.0));
+  EXPECT_TRUE(near(e[1], 5.0, 10.0, 0.0));
+}
+
+TEST(Fanuc, RotationG68TurnsProgrammedPositions) {
+  auto sink = run("G21 G90 G68 X0 Y0 R90.\nG0 X10. Y0\nG69\nG0 X10. Y0\nM30\n", Dialect::Fanuc);
+  auto e = sink.ends();
+  ASSERT_EQ(e.size(), 2u);
+  EXPECT_TRUE(near(e[0], 0.0, 10.0, 0.0));
+  EXPECT_TRUE(near(e[1], 10.0, 0.0, 0.0));
+}
+
+TEST(Fanuc, SubprogramWithPackedRepeatCountAndMacroLoop) {
+  const std::string program =
+      "O0001\nG21 G90 G0 X0 Y0 Z0\nM98 P31000\nM30\n"
+      "O1000\n#100=#100+1.\nG91 G0 X1.\nG90\nM99\n";
+  auto sink = run(program, Dialect::Fanuc);
+  auto e = sink.ends();
+  ASSERT_EQ(e.size(), 4u);
+  EXPECT_TRUE(near(e[3], 3.0, 0.0, 0.0));
+  auto loop = run("G21 G90\n#1=0\nWHILE [#1 LT 3] DO 1\nG0 X#1\n#1=#1+1\nEND 1\nM30\n", Dialect::Fanuc);
+  ASSERT_EQ(loop.ends().size(), 3u);
+  EXPECT_TRUE(near(loop.ends()[2], 2.0, 0.0, 0.0));
+}
+
+TEST(Fanuc, MacroAlarmStopsWithItsMessage) {
+  auto e = error_of("G21\n#3000=12 (TOOL MISSING)\nM30\n", Dialect::Fanuc);
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_NE(e.message().find("TOOL MISSING"), std::string::npos);
+}
+
+TEST(Fanuc, ErrorsAreLocated) {
+  auto e = error_of("G21 G90\nG0 X1. Y[#1+]\nM30\n", Dialect::Fanuc);
+  EXPECT_EQ(e.where().file, "test.prog");
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 13u);
+  e = error_of("G21\nG1 X5. F100\nG12.1 X1.\nM30\n", Dialect::Fanuc);
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_EQ(e.where().column, 1u);
+  e = error_of("G21\nGOTO 99\nM30\n", Dialect::Fanuc);
+  EXPECT_EQ(e.where().line, 2u);
+  e = error_of("G21\nM98 P5000\nM30\n", Dialect::Fanuc);
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 1u);
+  EXPECT_NE(e.message().find("O5000"), std::string::npos);
+}
+
+// ---- Mach3
+
+TEST(Mach3, ValuesAreTakenAsWrittenAndArcCentresFollowG901) {
+  auto sink = run("G21 G90 G0 X10 Y0\nG90.1\nG3 X0 Y10 I0 J0 F100\nM30\n", Dialect::Mach3);
+  ASSERT_EQ(sink.calls.empty(), false);
+  bool found = false;
+  for (const auto& c : sink.calls) {
+    if (auto* a = std::get_if<ncbridge::canonical::ArcFeed>(&c.data)) {
+      found = true;
+      EXPECT_NEAR(a->first_axis, 0.0, 1e-9);
+      EXPECT_NEAR(a->second_axis, 0.0, 1e-9);
+    }
+  }
+  EXPECT_TRUE(found);
+  auto e = error_of("G21\nWHILE [1] DO 1\n", Dialect::Mach3);
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 1u);
+}
+
+// ---- SINUMERIK 840D
+
+TEST(Siemens840D, FramesTransAndRot) {
+  auto sink = run("G71 G90\nTRANS X10 Y20\nG0 X1 Y0\nAROT RPL=90\nG0 X1 Y0\nTRANS\nG0 X1 Y0\nM30\n", Dialect::Siemens840D);
+  auto e = sink.ends();
+  ASSERT_EQ(e.size(), 3u);
+  EXPECT_TRUE(near(e[0], 11.0, 20.0, 0.0));
+  EXPECT_TRUE(near(e[1], 10.0, 21.0, 0.0));
+  EXPECT_TRUE(near(e[2], 1.0, 0.0, 0.0));
+}
+
+TEST(Siemens840D, AbsoluteAndIncrementalPerWord) {
+  auto sink = run("G71 G91\nG0 X5 Y=AC(7)\nX=AC(1) Y=IC(1)\nM30\n", Dialect::Siemens840D);
+  auto e = sink.ends();
+  ASSERT_EQ(e.size(), 2u);
+  EXPECT_TRUE(near(e[0], 5.0, 7.0, 0.0));
+  EXPECT_TRUE(near(e[1], 1.0, 8.0, 0.0));
+}
+
+TEST(Siemens840D, UnsupportedPocketCycleIsReportedWhereItIs) {
+  auto e = error_of("G71\nN20 G0 X0 Y0\nN30 POCKET3(10,0,1,-5,40,20,5,0,0,0,1,0.1,0.1,100,100,0,11,5)\nM30\n",
+                    Dialect::Siemens840D);
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_EQ(e.where().column, 5u);
+  EXPECT_NE(e.message().find("POCKET3"), std::string::npos);
+}
+
+TEST(Siemens840D, ErrorsAreLocated) {
+  auto e = error_of("G71\nG1 X=R1+ F100\nM30\n", Dialect::Siemens840D);
+  EXPECT_EQ(e.where().line, 2u);
+  e = error_of("G71\nGOTOF NOWHERE\nM30\n", Dialect::Siemens840D);
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 1u);
+  e = error_of("G71\nG0 X0 Y0\nG2 X10 Y0\nM30\n", Dialect::Siemens840D);
+  EXPECT_EQ(e.where().line, 3u);
+}
+
+// ---- Heidenhain
+
+TEST(Heidenhain, SectionRepeatRunsTheSectionOnceMoreForEachRep) {
+  const std::string program =
+      "0 BEGIN PGM T MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n2 LBL 1\n3 L IX+1 R0 FMAX\n4 CALL LBL 1 REP 2\n5 END PGM T MM\n";
+  auto sink = run(program, Dialect::Heidenhain);
+  auto e = sink.ends();
+  ASSERT_EQ(e.size(), 4u);
+  EXPECT_TRUE(near(e[3], 3.0, 0.0, 0.0));
+}
+
+TEST(Heidenhain, ChamferBetweenTwoLines) {
+  const std::string program =
+      "0 BEGIN PGM T MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n2 L X+10 F100\n3 CHF 2\n4 L Y+10\n5 END PGM T MM\n";
+  auto e = run(program, Dialect::Heidenhain).ends();
+  ASSERT_EQ(e.size(), 4u);
+  EXPECT_TRUE(near(e[1], 8.0, 0.0, 0.0));
+  EXPECT_TRUE(near(e[2], 10.0, 2.0, 0.0));
+  EXPECT_TRUE(near(e[3], 10.0, 10.0, 0.0));
+}
+
+TEST(Heidenhain, ErrorsAreLocated) {
+  auto e = error_of("0 BEGIN PGM T MM\n1 L X+0 R0 FMAX\n2 C X+5 Y+5 DR+\n3 END PGM T MM\n", Dialect::Heidenhain);
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_EQ(e.where().column, 3u);
+  EXPECT_NE(e.message().find("CC"), std::string::npos);
+  e = error_of("0 BEGIN PGM T MM\n1 L X+0 R0 FMAX\n2 CALL LBL 7\n3 END PGM T MM\n", Dialect::Heidenhain);
+  EXPECT_EQ(e.where().line, 3u);
+  e = error_of("0 BEGIN PGM T MM\n1 FROB X+0\n2 END PGM T MM\n", Dialect::Heidenhain);
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 3u);
+  e = error_of("0 BEGIN PGM T MM\n1 L X+0 R0 F100\n2 L X+(Q1 * 2 R0\n3 END PGM T MM\n", Dialect::Heidenhain);
+  EXPECT_EQ(e.where().line, 3u);
+}
+
+}  // namespace
