@@ -141,13 +141,13 @@ const char* feature_colour(fr::FeatureType t) {
 std::string dims_text(const fr::RecognizedFeature& f) {
   const auto& p = f.profile;
   switch (f.type) {
-    case fr::FeatureType::RoundHole: return "&#8960;" + num(f.diameter);
-    case fr::FeatureType::Slot: return "w " + num(f.slot_width);
+    case fr::FeatureType::RoundHole: return "&#8960;" + num(f.diameter, 2);
+    case fr::FeatureType::Slot: return "w " + num(f.slot_width, 2);
     default: break;
   }
-  if (p.shape == fr::ProfileShape::Circular) return "&#8960;" + num(p.diameter);
-  std::string s = num(p.length) + " &#215; " + num(p.width);
-  if (p.shape == fr::ProfileShape::Rectangular && p.corner_radius > 0.01) s += " r" + num(p.corner_radius);
+  if (p.shape == fr::ProfileShape::Circular) return "&#8960;" + num(p.diameter, 2);
+  std::string s = num(p.length, 2) + " &#215; " + num(p.width, 2);
+  if (p.shape == fr::ProfileShape::Rectangular && p.corner_radius > 0.01) s += " r" + num(p.corner_radius, 2);
   return s;
 }
 
@@ -184,8 +184,15 @@ std::string html_report(const HtmlReportInput& in) {
   }
   for (const auto& p : paths) total_points += p.points.size();
 
-  const double w = std::max(stock.size(0), 1e-3), h = std::max(stock.size(1), 1e-3);
-  View v{stock.min[0], stock.max[1], kWidthPx / w};
+  // The view: the stock and everything the tool went over (a profile's path lies outside it).
+  double xmin = stock.min[0], xmax = stock.max[0], ymin = stock.min[1], ymax = stock.max[1];
+  for (const auto& p : paths) {
+    for (const auto& q : p.points) {
+      xmin = std::min(xmin, q.x), xmax = std::max(xmax, q.x), ymin = std::min(ymin, q.y), ymax = std::max(ymax, q.y);
+    }
+  }
+  const double w = std::max(xmax - xmin, 1e-3), h = std::max(ymax - ymin, 1e-3);
+  View v{xmin, ymax, kWidthPx / w};
   const double height_px = h * v.scale + 2 * v.margin, width_px = kWidthPx + 2 * v.margin;
   // Thinning: skip points closer than `step` to the last drawn one when the program is large.
   const double thin = total_points > kMaxPoints ? std::sqrt(static_cast<double>(total_points) / kMaxPoints) * 0.5 / v.scale : 0;
@@ -193,8 +200,9 @@ std::string html_report(const HtmlReportInput& in) {
   std::string svg;
   svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + num(width_px, 0) + " " + num(height_px, 0) +
          "\" width=\"" + num(width_px, 0) + "\" height=\"" + num(height_px, 0) + "\">\n";
-  svg += "<rect x=\"" + num(v.sx(stock.min[0]), 2) + "\" y=\"" + num(v.sy(stock.max[1]), 2) + "\" width=\"" + num(w * v.scale, 2) +
-         "\" height=\"" + num(h * v.scale, 2) + "\" fill=\"#f4f1ea\" stroke=\"#999\" stroke-width=\"1\"/>\n";
+  svg += "<rect x=\"" + num(v.sx(stock.min[0]), 2) + "\" y=\"" + num(v.sy(stock.max[1]), 2) + "\" width=\"" +
+         num(stock.size(0) * v.scale, 2) + "\" height=\"" + num(stock.size(1) * v.scale, 2) +
+         "\" fill=\"#f4f1ea\" stroke=\"#999\" stroke-width=\"1\"/>\n";
   svg += "<text x=\"" + num(v.sx(stock.min[0]), 2) + "\" y=\"" + num(v.sy(stock.max[1]) - 8, 2) + "\" class=\"axis\">stock " +
          num(stock.size(0)) + " &#215; " + num(stock.size(1)) + " &#215; " + num(stock.size(2)) + " mm, X &#8594; Y &#8593;</text>\n";
   svg += "<g fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
@@ -227,10 +235,25 @@ std::string html_report(const HtmlReportInput& in) {
     svg += "<g stroke=\"" + std::string(feature_colour(f.type)) + "\"><title>" + escape(cc2.feature_ids[i]) + "</title>" + outline + "</g>\n";
   }
   svg += "</g>\n";
+  // Labels at the features' centres, moved down a line while they would cover an earlier one.
+  std::vector<std::pair<double, double>> placed;
   for (std::size_t i = 0; i < cc2.features.size(); ++i) {
     const auto& f = cc2.features[i];
-    svg += "<text class=\"label\" x=\"" + num(v.sx(f.x), 2) + "\" y=\"" + num(v.sy(f.y), 2) + "\" fill=\"" +
-           feature_colour(f.type) + "\">" + escape(cc2.feature_ids[i]) + "</text>\n";
+    const double x = v.sx(f.x);
+    double y = v.sy(f.y);
+    const double half_width = 3.6 * static_cast<double>(cc2.feature_ids[i].size());
+    for (bool moved = true; moved;) {
+      moved = false;
+      for (const auto& [px, py] : placed) {
+        if (std::abs(py - y) < 14 && std::abs(px - x) < half_width + 40) {
+          y = py + 15;
+          moved = true;
+        }
+      }
+    }
+    placed.emplace_back(x, y);
+    svg += "<text class=\"label\" x=\"" + num(x, 2) + "\" y=\"" + num(y, 2) + "\" fill=\"" + feature_colour(f.type) + "\">" +
+           escape(cc2.feature_ids[i]) + "</text>\n";
   }
   svg += "</svg>\n";
 
@@ -243,12 +266,12 @@ std::string html_report(const HtmlReportInput& in) {
     std::string ops;
     for (const auto& op : f.operations) {
       ops += escape(std::string(fr::to_string(op.type))) + " T" + std::to_string(op.tool_number);
-      if (op.strategy != fr::Strategy::None) ops += " (" + escape(std::string(fr::to_string(op.strategy))) + ")";
+      if (op.strategy != fr::Strategy::None && op.strategy != fr::Strategy::Plunge) ops += " (" + escape(std::string(fr::to_string(op.strategy))) + ")";
       ops += "<br>";
     }
     panel += "<tr><td><span class=\"sw\" style=\"border-color:" + std::string(feature_colour(f.type)) + "\"></span>" +
-             escape(cc2.feature_ids[i]) + "</td><td>" + escape(std::string(fr::to_string(f.type))) + "</td><td>" + num(f.x) + ", " +
-             num(f.y) + "</td><td>" + num(f.top_z) + " / " + num(f.bottom_z) + "</td><td>" + dims_text(f) + "</td><td>" + ops +
+             escape(cc2.feature_ids[i]) + "</td><td>" + escape(std::string(fr::to_string(f.type))) + "</td><td>" + num(f.x, 2) + ", " +
+             num(f.y, 2) + "</td><td>" + num(f.top_z, 2) + " / " + num(f.bottom_z, 2) + "</td><td>" + dims_text(f) + "</td><td>" + ops +
              "</td></tr>\n";
   }
   panel += "</table>\n<h2>Workingsteps (" + std::to_string(legend.size()) + ")</h2>\n<ul class=\"legend\">\n";
@@ -269,11 +292,12 @@ std::string html_report(const HtmlReportInput& in) {
   std::string html;
   html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>ncbridge CC2: " + escape(in.title) +
           "</title>\n<style>\n"
-          "body{margin:0;font:13px/1.4 system-ui,sans-serif;color:#222;display:flex;min-height:100vh}\n"
+          "body{margin:0;font:12px/1.35 system-ui,sans-serif;color:#222;display:flex;min-height:100vh}\n"
           "main{flex:1 1 auto;padding:12px;overflow:auto}\n"
-          "aside{flex:0 0 460px;padding:12px 16px;border-left:1px solid #ccc;background:#fafafa;overflow:auto;max-height:100vh;box-sizing:border-box}\n"
+          "aside{flex:0 0 560px;padding:12px 16px;border-left:1px solid #ccc;background:#fafafa;overflow:auto;max-height:100vh;box-sizing:border-box}\n"
           "h1{font-size:16px;margin:0 0 8px}h2{font-size:14px;margin:14px 0 6px}\n"
-          "table{border-collapse:collapse;width:100%}td,th{border-bottom:1px solid #e2e2e2;padding:2px 4px;text-align:left;vertical-align:top}\n"
+          "table{border-collapse:collapse;width:100%;table-layout:fixed}td,th{border-bottom:1px solid #e2e2e2;padding:2px 4px;"
+          "text-align:left;vertical-align:top;overflow-wrap:anywhere}\n"
           "ul{padding-left:18px;margin:4px 0}.legend{list-style:none;padding:0}\n"
           ".sw{display:inline-block;width:12px;height:12px;margin-right:6px;vertical-align:middle;border:2px solid transparent;box-sizing:border-box}\n"
           "svg{max-width:100%;height:auto}svg .label{font:bold 12px system-ui,sans-serif;text-anchor:middle;dominant-baseline:middle;"
