@@ -37,6 +37,15 @@ void extend(stepnc::SourceLines& lines, const canonical::Source& source) {
   lines.last_line = std::max(lines.last_line, source.line);
 }
 
+// "<prefix><n><suffix>", e.g. "WS12 FREEFORM7".
+std::string numbered(std::string_view prefix, int n, std::string_view suffix = {}) {
+  const std::string digits = std::to_string(n);
+  std::string s;
+  s.reserve(prefix.size() + digits.size() + suffix.size());
+  s.append(prefix).append(digits).append(suffix);
+  return s;
+}
+
 // Index of `value` in `table`, appending it when new. Recent entries are checked first: programs
 // switch between few technologies.
 template <class T, class RefT>
@@ -74,6 +83,9 @@ struct Cc1Builder::State {
   Options options;
   MachineState m;
   stepnc::Project project;
+  std::vector<stepnc::Feature>& features = project.features;
+  std::vector<stepnc::Operation>& operations = project.operations;
+  std::vector<stepnc::Executable>& executables = project.main_workplan.its_elements;
   std::vector<Warning> warnings;
   std::vector<std::string> files;
   std::uint64_t calls = 0;
@@ -165,13 +177,13 @@ struct Cc1Builder::State {
     if (!rapid) return;
     if (rapid->path.points.size() >= 2) {
       stepnc::RapidMovement r;
-      r.its_id = "RAPID" + std::to_string(++rapid_count);
+      r.its_id = numbered("RAPID", ++rapid_count);
       stepnc::CutterLocationTrajectory t;
       t.its_type = stepnc::ToolpathType::Connect;
       t.basiccurve.segments.emplace_back(std::move(rapid->path));
       r.its_toolpath = stepnc::ToolpathList{{std::move(t)}};
       r.source = rapid->source;
-      project.main_workplan.its_elements.emplace_back(std::move(r));
+      executables.emplace_back(std::move(r));
     }
     rapid.reset();
   }
@@ -189,7 +201,8 @@ struct Cc1Builder::State {
     }
     stepnc::FreeformOperation op;
     const int n = ++freeform_count;
-    op.its_id = "FREEFORM" + std::to_string(n) + " " + project.tools[cut->tool.index].its_id;
+    op.its_id = numbered("FREEFORM", n, " ");
+    op.its_id += project.tools[cut->tool.index].its_id;
     if (rapid && rapid->retracts) op.retract_plane = rapid->max_z;
     op.its_tool = cut->tool;
     op.its_technology = cut->technology;
@@ -197,17 +210,18 @@ struct Cc1Builder::State {
     op.its_toolpath = stepnc::ToolpathList{std::move(cut->trajectories)};
 
     stepnc::ToolpathFeature feature;
-    feature.its_id = "TOOLPATH FEATURE" + std::to_string(n);
+    feature.its_id = numbered("TOOLPATH FEATURE", n);
     feature.depth.position.location.z = std::isfinite(cut->min_z) ? cut->min_z : 0.0;
 
-    project.features.emplace_back(std::move(feature));
-    project.operations.emplace_back(std::move(op));
+    features.emplace_back(std::move(feature));
+    operations.emplace_back(std::move(op));
     stepnc::MachiningWorkingstep ws;
-    ws.its_id = "WS" + std::to_string(++workingstep_count) + " FREEFORM" + std::to_string(n);
-    ws.its_feature = stepnc::FeatureRef{static_cast<std::uint32_t>(project.features.size() - 1)};
-    ws.its_operation = stepnc::OperationRef{static_cast<std::uint32_t>(project.operations.size() - 1)};
+    ws.its_id = numbered("WS", ++workingstep_count, " FREEFORM");
+    ws.its_id += std::to_string(n);
+    ws.its_feature = stepnc::FeatureRef{static_cast<std::uint32_t>(features.size() - 1)};
+    ws.its_operation = stepnc::OperationRef{static_cast<std::uint32_t>(operations.size() - 1)};
     ws.source = cut->source;
-    project.main_workplan.its_elements.emplace_back(std::move(ws));
+    executables.emplace_back(std::move(ws));
     cut.reset();
   }
 
@@ -343,14 +357,15 @@ struct Cc1Builder::State {
     const int n = ++hole_count;
     HoleResult r = make_hole(*hole, *hole_tool, options.stock, options.hole_diameter_tolerance, n);
     const std::string op_id = stepnc::machining_operation(r.operation).its_id;
-    project.features.emplace_back(std::move(r.feature));
-    project.operations.emplace_back(std::move(r.operation));
+    features.emplace_back(std::move(r.feature));
+    operations.emplace_back(std::move(r.operation));
     stepnc::MachiningWorkingstep ws;
-    ws.its_id = "WS" + std::to_string(++workingstep_count) + " " + op_id;
-    ws.its_feature = stepnc::FeatureRef{static_cast<std::uint32_t>(project.features.size() - 1)};
-    ws.its_operation = stepnc::OperationRef{static_cast<std::uint32_t>(project.operations.size() - 1)};
+    ws.its_id = numbered("WS", ++workingstep_count, " ");
+    ws.its_id += op_id;
+    ws.its_feature = stepnc::FeatureRef{static_cast<std::uint32_t>(features.size() - 1)};
+    ws.its_operation = stepnc::OperationRef{static_cast<std::uint32_t>(operations.size() - 1)};
     ws.source = hole->source;
-    project.main_workplan.its_elements.emplace_back(std::move(ws));
+    executables.emplace_back(std::move(ws));
     hole.reset();
   }
 
@@ -434,9 +449,7 @@ struct Cc1Builder::State {
     const double secplane_z = options.security_plane_z.value_or(max_rapid_z.value_or(max_motion_z.value_or(0.0)));
     stepnc::Plane secplane;
     secplane.position.location.z = secplane_z;
-    for (auto& e : project.main_workplan.its_elements) {
-      std::visit([&](auto& x) { x.its_secplane = secplane; }, e);
-    }
+    for (auto& e : executables) std::visit([&](auto& x) { x.its_secplane = secplane; }, e);
     project.its_id = options.project_id;
     project.setup.its_secplane = secplane;
     if (m.setup_origin) {

@@ -31,7 +31,7 @@ double parameter_after(double travelled, bool ccw) {
   double p = std::fmod(degrees(ccw ? travelled : -travelled), 360.0);
   if (p < 0) p += 360.0;
   if (p >= 360.0) p -= 360.0;
-  return p;
+  return p == 0 ? 0.0 : p;  // no -0 (a clockwise start) in the file
 }
 
 }  // namespace

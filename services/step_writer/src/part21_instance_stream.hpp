@@ -5,7 +5,10 @@
 // comma, past kLineWidth) as the generic writer does.
 //
 //   const InstanceId p = s.begin("CARTESIAN_POINT"); s.string(""); s.open_list(); s.real(1); ... s.close_list(); s.end();
+#include <algorithm>
 #include <charconv>
+#include <cstring>
+#include <memory>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -23,75 +26,82 @@ class InstanceStream {
   static constexpr std::size_t kChunk = std::size_t{1} << 20;
   static constexpr std::size_t kLineWidth = 100;
 
-  explicit InstanceStream(const ChunkSink& sink) : sink_(sink) { out_.reserve(kChunk + kChunk / 4); }
+  explicit InstanceStream(const ChunkSink& sink) : sink_(sink), capacity_(kChunk + kChunk / 4), buf_(new char[capacity_]) {}
 
   // Text outside the DATA section (header, ENDSEC), written as is.
-  void raw(std::string_view text) { out_ += text; }
+  void raw(std::string_view text) { put(text); }
 
   InstanceId begin(std::string_view entity) {
-    line_start_ = out_.size();
-    out_ += '#';
-    append_id(next_);
-    out_ += '=';
-    out_ += entity;
-    out_ += '(';
+    line_start_ = len_;
+    char* p = room(kMaxIdChars + entity.size() + 3);
+    *p++ = '#';
+    p = std::to_chars(p, p + kMaxIdChars, next_).ptr;
+    *p++ = '=';
+    p = copy(entity, p);
+    *p++ = '(';
+    len_ = static_cast<std::size_t>(p - buf_.get());
     first_ = true;
     return next_;
   }
   InstanceId end() {
-    out_ += ");\n";
-    if (out_.size() >= kChunk) flush();
+    put(");\n");
+    if (len_ >= kChunk) flush();
     return next_++;
   }
 
   void real(double v) {
-    separator();
-    char buf[kMaxRealChars];
-    out_.append(buf, write_real(buf, v));
+    char* p = separator(room(kSeparatorChars + kMaxRealChars));
+    len_ = static_cast<std::size_t>(write_real(p, v) - buf_.get());
   }
   void integer(std::int64_t v) {
-    separator();
-    char buf[24];
-    out_.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+    char* p = separator(room(kSeparatorChars + kMaxIdChars));
+    len_ = static_cast<std::size_t>(std::to_chars(p, p + kMaxIdChars, v).ptr - buf_.get());
   }
   void ref(InstanceId id) {
-    separator();
-    out_ += '#';
-    append_id(id);
+    char* p = separator(room(kSeparatorChars + 1 + kMaxIdChars));
+    *p++ = '#';
+    len_ = static_cast<std::size_t>(std::to_chars(p, p + kMaxIdChars, id).ptr - buf_.get());
   }
-  void unset() {
-    separator();
-    out_ += '$';
-  }
+  void unset() { token("$"); }
   void string(std::string_view utf8) {
-    separator();
-    append_string(out_, utf8);
+    if (std::all_of(utf8.begin(), utf8.end(), [](char c) { return c >= 0x20 && c < 0x7F && c != '\'' && c != '\\'; })) {
+      char* p = separator(room(kSeparatorChars + utf8.size() + 2));  // nothing to escape
+      *p++ = '\'';
+      p = copy(utf8, p);
+      *p++ = '\'';
+      len_ = static_cast<std::size_t>(p - buf_.get());
+      return;
+    }
+    scratch_.clear();
+    append_string(scratch_, utf8);
+    token(scratch_);
   }
   void enumeration(std::string_view name) {  // upper case, without the dots
-    separator();
-    out_ += '.';
-    out_ += name;
-    out_ += '.';
+    char* p = separator(room(kSeparatorChars + name.size() + 2));
+    *p++ = '.';
+    p = copy(name, p);
+    *p++ = '.';
+    len_ = static_cast<std::size_t>(p - buf_.get());
   }
-  void boolean(bool v) { enumeration(v ? "T" : "F"); }
+  void boolean(bool v) { token(v ? ".T." : ".F."); }
   void opt_real(const std::optional<double>& v) { v ? real(*v) : unset(); }
   void opt_boolean(const std::optional<bool>& v) { v ? boolean(*v) : unset(); }
   void opt_ref(InstanceId id) { id != 0 ? ref(id) : unset(); }  // 0: no instance, written $
   void typed_real(std::string_view type, double v) {  // PARAMETER_VALUE(30.)
-    separator();
-    out_ += type;
-    out_ += '(';
+    char* p = separator(room(kSeparatorChars + type.size() + 1));
+    p = copy(type, p);
+    *p++ = '(';
+    len_ = static_cast<std::size_t>(p - buf_.get());
     first_ = true;
     real(v);
-    out_ += ')';
+    put(")");
   }
   void open_list() {
-    separator();
-    out_ += '(';
+    token("(");
     first_ = true;
   }
   void close_list() {
-    out_ += ')';
+    put(")");
     first_ = false;
   }
   template <class Ids>
@@ -109,35 +119,67 @@ class InstanceStream {
   InstanceId next_id() const { return next_; }
 
  private:
-  void separator() {
+  static constexpr std::size_t kMaxIdChars = 24;
+  static constexpr std::size_t kSeparatorChars = 4;  // ",\n  "
+
+  // At least n free bytes at the end of the buffer.
+  char* room(std::size_t n) {
+    if (capacity_ - len_ < n) grow(n);
+    return buf_.get() + len_;
+  }
+  void grow(std::size_t n) {
+    const std::size_t capacity = std::max(2 * capacity_, len_ + n);
+    std::unique_ptr<char[]> bigger(new char[capacity]);
+    std::memcpy(bigger.get(), buf_.get(), len_);
+    buf_ = std::move(bigger);
+    capacity_ = capacity;
+  }
+  static char* copy(std::string_view text, char* to) {
+    std::memcpy(to, text.data(), text.size());
+    return to + text.size();
+  }
+  void put(std::string_view text) {
+    copy(text, room(text.size()));
+    len_ += text.size();
+  }
+  void token(std::string_view text) {
+    char* p = separator(room(kSeparatorChars + text.size()));
+    len_ = static_cast<std::size_t>(copy(text, p) - buf_.get());
+  }
+  // The comma before every attribute but the first of its list, and a line break after it once
+  // the line is long; `p` has room for both.
+  char* separator(char* p) {
     if (first_) {
       first_ = false;
-      return;
+      return p;
     }
-    out_ += ',';
-    if (out_.size() - line_start_ > kLineWidth) {
-      out_ += "\n  ";
-      line_start_ = out_.size() - 2;
+    *p++ = ',';
+    const std::size_t at = static_cast<std::size_t>(p - buf_.get());
+    if (at - line_start_ > kLineWidth) {
+      *p++ = '\n';
+      line_start_ = at + 1;
+      *p++ = ' ';
+      *p++ = ' ';
     }
-  }
-  void append_id(InstanceId id) {
-    char buf[24];
-    out_.append(buf, std::to_chars(buf, buf + sizeof buf, id).ptr);
+    return p;
   }
   void flush() {
-    if (out_.empty()) return;
-    written_ += out_.size();
-    sink_(out_);
-    out_.clear();
+    if (len_ == 0) return;
+    written_ += len_;
+    sink_(std::string_view(buf_.get(), len_));
+    len_ = 0;
     line_start_ = 0;
   }
 
   const ChunkSink& sink_;
-  std::string out_;
+  std::size_t capacity_;
+  std::unique_ptr<char[]> buf_;
+  std::size_t len_ = 0;
   std::size_t line_start_ = 0;
   bool first_ = true;
   InstanceId next_ = 1;
   std::uint64_t written_ = 0;
+  std::string scratch_;
 };
 
 }  // namespace ncbridge::step_writer::part21

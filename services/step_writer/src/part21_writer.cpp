@@ -30,7 +30,8 @@ char* write_short_decimal(char* first, double value) {
   const double magnitude = std::fabs(value);
   if (!(magnitude >= 1e-3 && magnitude < 1e5)) return nullptr;
   for (int k = 0; k < 7; ++k) {
-    const double scaled = std::nearbyint(magnitude * kPow10[k]);
+    // Rounded to the nearest integer by the 2^52 trick (exact below 2^52; here below 1e11).
+    const double scaled = (magnitude * kPow10[k] + 0x1p52) - 0x1p52;
     if (scaled / kPow10[k] != magnitude) continue;
     auto digits = static_cast<std::uint64_t>(scaled);
     char reversed[24];
