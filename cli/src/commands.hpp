@@ -8,5 +8,10 @@ namespace ncbridge::cli {
 void add_canon_command(CLI::App& app, int& exit_code);
 void add_check_command(CLI::App& app, int& exit_code);  // Part 21 schema check (step_writer)
 void add_convert_command(CLI::App& app, int& exit_code);  // program -> CC1 file (embedded pipeline)
+// The DDS services (NCBRIDGE_BUILD_SERVICES): run them locally, submit jobs, list, live capture.
+void add_up_command(CLI::App& app, int& exit_code);
+void add_submit_command(CLI::App& app, int& exit_code);
+void add_status_command(CLI::App& app, int& exit_code);
+void add_controller_sim_command(CLI::App& app, int& exit_code);
 
 }  // namespace ncbridge::cli

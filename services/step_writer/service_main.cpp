@@ -2,7 +2,6 @@
 // topic is written as a Part 21 file, with the same library calls (and so the same bytes) as
 // `ncbridge convert`: into --output-dir (atomically), and onto the part21 topic with its digest.
 #include <CLI/CLI.hpp>
-#include <openssl/sha.h>
 
 #include <filesystem>
 #include <string>
@@ -10,6 +9,7 @@
 #include "ncbridge/bus/topics.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/service/service_options.hpp"
+#include "ncbridge/service/sha256.hpp"
 #include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
 #include "ncbridge/stepnc_codec/project_codec.hpp"
@@ -41,7 +41,7 @@ void write(const service::JobInput& input, service::JobContext& context, const s
   file.level = model.level == wire::ModelLevel::Cc2 ? wire::Part21Level::Cc2 : wire::Part21Level::Cc1;
   file.file_name = model.output_name;
   file.content = step_writer::write_stepnc(project, options);
-  SHA256(reinterpret_cast<const unsigned char*>(file.content.data()), file.content.size(), file.sha256.data());
+  file.sha256 = service::sha256(file.content);
   if (!output_dir.empty()) step_writer::write_file_atomically(output_dir / file.file_name, file.content);
   context.output().write(input.job_id, file.level == wire::Part21Level::Cc2 ? "cc2" : "cc1", 0, 0, true,
                          wire::encode_part21(file));

@@ -1,0 +1,120 @@
+// `ncbridge controller-sim PROGRAM --controller ID [--rate BLOCKS/S]`: publishes a program on
+// the blocks topic as a controller executing it would: RUN_START (text: the program's name),
+// one BLOCK per non-empty line in order (seq 1, 2, ...), RUN_END, all on the instance
+// (controller id, run id). The interpreter service turns the run into job "ID/RUN" when RUN_END
+// arrives. A real controller publishes the blocks it executes in the same way
+// (docs/deployment.md, "Live capture"); this simulator executes no control flow itself.
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <random>
+#include <string>
+#include <thread>
+
+#include "commands.hpp"
+#include "ncbridge/bus/participant.hpp"
+#include "ncbridge/bus/writer.hpp"
+#include "ncbridge/common/error.hpp"
+#include "ncbridge/service/job_watch.hpp"
+#include "ncbridge/step_writer/atomic_file.hpp"
+#include "ncbridge/wire/block.hpp"
+
+namespace ncbridge::cli {
+namespace {
+
+struct ControllerSimArguments {
+  std::string program;
+  std::string controller;
+  std::string run_id;
+  double rate = 0;  // blocks per second, 0 = as fast as the bus takes them
+  std::optional<std::uint32_t> domain;
+  std::string output;
+  double timeout_s = 600;
+};
+
+int run_controller_sim(const ControllerSimArguments& args) {
+  std::ifstream in(args.program, std::ios::binary);
+  if (!in) throw InputError({args.program, 0, 0}, "cannot open program file");
+  std::string run_id = args.run_id;
+  if (run_id.empty()) {
+    run_id = "run-" + std::to_string(std::chrono::duration_cast<std::chrono::milliseconds>(
+                                         std::chrono::system_clock::now().time_since_epoch()).count());
+  }
+  const std::string job_id = args.controller + "/" + run_id;
+
+  bus::BusConfig config = bus::config_from_environment();
+  if (args.domain) config.domain_id = *args.domain;
+  bus::Participant participant(config);
+  std::optional<service::JobWatch> watch;
+  if (!args.output.empty()) watch.emplace(participant, job_id);
+  bus::Writer blocks(participant, bus::Topic::Blocks);
+  if (!blocks.wait_for_readers(1, std::chrono::seconds(10))) {
+    std::fprintf(stderr, "ncbridge controller-sim: no interpreter service on DDS domain %u\n", participant.domain_id());
+    return 3;
+  }
+  const auto period = args.rate > 0 ? std::chrono::duration<double>(1.0 / args.rate) : std::chrono::duration<double>(0);
+  auto next = std::chrono::steady_clock::now();
+  std::uint64_t seq = 0;
+  const auto publish = [&](wire::BlockKind kind, std::string text, std::uint32_t line) {
+    wire::ExecutedBlock b{args.controller, run_id, seq, kind, std::move(text), line};
+    blocks.write(args.controller, run_id, seq, static_cast<std::uint32_t>(kind), kind == wire::BlockKind::RunEnd,
+                 wire::encode_block(b));
+    ++seq;
+  };
+  publish(wire::BlockKind::RunStart, args.program, 0);
+  std::uint32_t line_number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    if (period.count() > 0) {
+      next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
+      std::this_thread::sleep_until(next);
+    }
+    publish(wire::BlockKind::Block, line, line_number);
+  }
+  publish(wire::BlockKind::RunEnd, "", 0);
+  const auto run_end = std::chrono::steady_clock::now();
+  std::printf("%s\n", job_id.c_str());
+  std::fflush(stdout);
+  const auto timeout = std::chrono::milliseconds(static_cast<long long>(args.timeout_s * 1000));
+  if (!watch) {
+    blocks.wait_for_acks(timeout);
+    return 0;
+  }
+  const service::JobOutcome outcome = watch->wait(timeout);
+  if (outcome.error) {
+    const wire::JobStatus& e = *outcome.error;
+    std::fprintf(stderr, "%s: error: %s (%s)\n", e.where.to_string().c_str(), e.message.c_str(), e.stage.c_str());
+    return 1;
+  }
+  if (!outcome.file) {
+    std::fprintf(stderr, "ncbridge controller-sim: run %s not converted after %.0f s\n", job_id.c_str(), args.timeout_s);
+    return 3;
+  }
+  step_writer::write_file_atomically(args.output, outcome.file->content);
+  std::fprintf(stderr, "run end to %s file: %.1f ms\n", outcome.file->level == wire::Part21Level::Cc2 ? "CC2" : "CC1",
+               std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run_end).count());
+  return 0;
+}
+
+}  // namespace
+
+void add_controller_sim_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ControllerSimArguments>();
+  CLI::App* cmd = app.add_subcommand("controller-sim", "Publish a program block by block as a controller running it");
+  cmd->add_option("program", args->program, "Part program")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--controller", args->controller, "Controller id")->required();
+  cmd->add_option("--run-id", args->run_id, "Run id (default: run-<unix ms>)");
+  cmd->add_option("--rate", args->rate, "Blocks per second (default: as fast as possible)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));
+  cmd->add_option("-o,--output", args->output, "Wait for the run's Part 21 file and write it here");
+  cmd->add_option("--timeout", args->timeout_s, "Seconds to wait for the file (default 600)");
+  cmd->callback([args, &exit_code]() { exit_code = run_controller_sim(*args); });
+}
+
+}  // namespace ncbridge::cli

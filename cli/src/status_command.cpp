@@ -1,0 +1,108 @@
+// `ncbridge status`: the live workers of each stage (workers topic) and every job the status
+// topic still holds, with each stage's latest state. Both topics are durable, so listening for
+// a moment (--listen) gives the current picture.
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "commands.hpp"
+#include "ncbridge/bus/participant.hpp"
+#include "ncbridge/bus/reader.hpp"
+#include "ncbridge/bus/topics.hpp"
+#include "ncbridge/bus/worker_tracker.hpp"
+#include "ncbridge/common/error.hpp"
+#include "ncbridge/wire/status.hpp"
+#include "ncbridge/wire/worker.hpp"
+
+namespace ncbridge::cli {
+namespace {
+
+struct StatusArguments {
+  std::optional<std::uint32_t> domain;
+  double listen_s = 1.5;
+};
+
+const char* state_name(wire::JobState s) {
+  switch (s) {
+    case wire::JobState::Queued: return "queued";
+    case wire::JobState::Running: return "running";
+    case wire::JobState::Progress: return "progress";
+    case wire::JobState::Done: return "done";
+    case wire::JobState::Error: return "ERROR";
+  }
+  return "?";
+}
+
+int run_status(const StatusArguments& args) {
+  bus::BusConfig config = bus::config_from_environment();
+  if (args.domain) config.domain_id = *args.domain;
+  bus::Participant participant(config);
+  bus::Reader workers(participant, bus::Topic::Workers);
+  bus::Reader statuses(participant, bus::Topic::Status);
+  bus::WorkerTracker tracker;
+  std::map<std::string, wire::WorkerInfo> infos;  // worker id -> latest announcement
+  std::map<std::string, std::map<std::string, wire::JobStatus>> jobs;  // job -> stage -> status
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(static_cast<long long>(args.listen_s * 1000));
+  while (std::chrono::steady_clock::now() < deadline) {
+    for (const bus::Received& r : workers.take(std::chrono::milliseconds(20))) {
+      tracker.apply(r);
+      if (r.has_data) {
+        try {
+          infos[r.envelope.subkey] = wire::decode_worker(r.envelope.payload);
+        } catch (const InputError&) {
+        }
+      }
+    }
+    for (const bus::Received& r : statuses.take(std::chrono::milliseconds(0))) {
+      if (!r.has_data || r.envelope.key.empty()) continue;
+      try {
+        wire::JobStatus s = wire::decode_status(r.envelope.payload);
+        jobs[r.envelope.key][s.stage] = std::move(s);
+      } catch (const InputError&) {
+      }
+    }
+  }
+  std::printf("workers (DDS domain %u):\n", participant.domain_id());
+  for (std::string_view stage : {bus::kStageInterpreter, bus::kStageCc1Builder, bus::kStageFeatureRecognizer,
+                                 bus::kStageStepWriter}) {
+    const auto live = tracker.live_workers(stage);
+    std::printf("  %-19s %zu live", std::string(stage).c_str(), live.size());
+    for (const std::string& w : live) {
+      const auto it = infos.find(w);
+      const bool busy = it != infos.end() && !it->second.jobs_in_progress.empty();
+      std::printf("  %s%s", w.c_str(), busy ? (" (busy: " + it->second.jobs_in_progress.front() + ")").c_str() : "");
+    }
+    std::printf("\n");
+  }
+  std::printf("jobs: %zu\n", jobs.size());
+  for (const auto& [job, stages] : jobs) {
+    std::printf("  %s", job.c_str());
+    for (std::string_view stage : {bus::kStageInterpreter, bus::kStageCc1Builder, bus::kStageFeatureRecognizer,
+                                   bus::kStageStepWriter}) {
+      const auto it = stages.find(std::string(stage));
+      if (it == stages.end()) continue;
+      std::printf("  %s:%s", std::string(stage).c_str(), state_name(it->second.state));
+      if (it->second.state == wire::JobState::Error)
+        std::printf(" [%s: %s]", it->second.where.to_string().c_str(), it->second.message.c_str());
+    }
+    std::printf("\n");
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_status_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<StatusArguments>();
+  CLI::App* cmd = app.add_subcommand("status", "List the DDS services' workers and jobs");
+  cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));
+  cmd->add_option("--listen", args->listen_s, "Seconds to listen before printing (default 1.5)");
+  cmd->callback([args, &exit_code]() { exit_code = run_status(*args); });
+}
+
+}  // namespace ncbridge::cli
