@@ -1,12 +1,14 @@
 // The writer: real syntax, string escapes, header, determinism, wrapping, renumbering.
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <cstdlib>
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 #include "ncbridge/step_writer/part21_reader.hpp"
 #include "ncbridge/step_writer/part21_writer.hpp"
@@ -69,6 +71,37 @@ TEST(Part21Writer, RealsRoundTripExactly) {
     ++checked;
   }
   EXPECT_GT(checked, 19000);
+}
+
+// Program coordinates (a few decimals) take a path of their own in the writer; it must give
+// exactly the text of the general one: std::to_chars' shortest form in Part 21 syntax.
+std::string shortest_in_part21_syntax(double d) {
+  char buf[64];
+  std::string text(buf, std::to_chars(buf, buf + sizeof buf, d).ptr);
+  const std::size_t e = text.find('e');
+  std::string mantissa = text.substr(0, e);
+  if (mantissa.find('.') == std::string::npos) mantissa += '.';
+  if (e == std::string::npos) return mantissa;
+  std::string exponent = text.substr(e + 1);
+  if (exponent.front() == '+') exponent.erase(0, 1);
+  return mantissa + "E" + exponent;
+}
+
+TEST(Part21Writer, ShortDecimalsAreWrittenAsTheirShortestRoundTripText) {
+  std::mt19937_64 random(1464911);
+  std::uniform_int_distribution<std::int64_t> digits(-300000000000, 300000000000);
+  std::uniform_int_distribution<int> decimals(0, 8);
+  const double scale[] = {1, 10, 100, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8};
+  for (int k = 0; k < 200000; ++k) {
+    const int n = decimals(random);
+    const double d = static_cast<double>(digits(random) % 100000000000) / scale[n];
+    ASSERT_EQ(format_real(d), shortest_in_part21_syntax(d)) << d;
+  }
+  for (double d : {0.001, -0.001, 0.0001, 0.00123, 99999.999999, 100000.0, 99999.0, 10000.0, 1e-3 * 7, 150.494,
+                   -9.293, 1.2018999999999997, 0.1 + 0.2, 5.0, 12345.6789}) {
+    EXPECT_EQ(format_real(d), shortest_in_part21_syntax(d)) << d;
+    EXPECT_EQ(read_back_real(format_real(d)), d) << format_real(d);
+  }
 }
 
 TEST(Part21Writer, StringsAreEscapedAndReadBackToTheSameText) {
