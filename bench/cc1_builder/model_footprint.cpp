@@ -1,10 +1,8 @@
 // model_footprint PROGRAM TOOLS STOCK: how much memory the CC1 conversion of a program takes, by
-// stage. Runs interpreter -> cc1_builder, measures the finished model (bytes its containers own,
-// by capacity) and the heap in use, then writes the Part 21 text to a sink that only counts it.
-// Comparing two program lengths shows what grows with the program and what stays flat:
-//   bench/cc1_builder/footprint.sh (figures in docs/performance.md, "CC1 conversion").
-#include <malloc.h>
-
+// stage. Runs interpreter -> cc1_builder, measures the finished model (bytes its containers use)
+// and the peak resident set, then writes the Part 21 text to a sink that only counts it.
+// Comparing two program lengths shows what grows with the program and what stays flat (figures in
+// docs/performance.md, "CC1 conversion").
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -32,10 +30,6 @@ Resident resident() {
     if (line.rfind("VmRSS:", 0) == 0) r.now_kb = std::stol(line.substr(6));
   }
   return r;
-}
-double heap_in_use_mb() {
-  const auto m = mallinfo2();
-  return static_cast<double>(m.uordblks + m.hblkhd) / 1e6;  // small blocks + mmapped ones
 }
 
 // Bytes the model's containers use beyond the Project value itself (sizes: the capacity beyond
@@ -107,13 +101,11 @@ int main(int argc, char** argv) {
     options.stock = setup::read_stock(argv[3]);
     interpreter::Options interp;
     interp.tools = options.tools;
-    const double heap_before = heap_in_use_mb();
     cc1_builder::Cc1Builder builder(options);
     CountingSink sink(builder);
     interpreter::interpret_file(argv[1], interp, sink);
     const stepnc::Project project = builder.take_project();
     const Resident built = resident();
-    const double heap_model = heap_in_use_mb() - heap_before;
     Footprint model;
     model.project(project);
     std::uint64_t bytes = 0;
@@ -123,15 +115,16 @@ int main(int argc, char** argv) {
     std::printf("calls %llu, moves %llu, workplan elements %zu, file %.1f MB\n",
                 static_cast<unsigned long long>(sink.calls), static_cast<unsigned long long>(sink.moves),
                 workingsteps, static_cast<double>(bytes) / 1e6);
-    std::printf("model: %.1f MB used by its containers (%.0f B per move, %.0f B per workplan element), heap in use %.1f MB\n",
+    std::printf("model: %.1f MB used by its containers (%.0f B per move, %.0f B per workplan element)\n",
                 static_cast<double>(model.bytes) / 1e6, static_cast<double>(model.bytes) / static_cast<double>(sink.moves),
-                static_cast<double>(model.bytes) / static_cast<double>(workingsteps), heap_model);
+                static_cast<double>(model.bytes) / static_cast<double>(workingsteps));
     std::printf("peak RSS after building %.1f MB (held %.1f MB), after writing %.1f MB: writer adds %.1f MB\n",
                 static_cast<double>(built.peak_kb) / 1e3, static_cast<double>(built.now_kb) / 1e3,
                 static_cast<double>(written.peak_kb) / 1e3,
                 static_cast<double>(written.peak_kb - built.peak_kb) / 1e3);
-    std::printf("peak RSS after building minus heap the model holds: %.1f MB (builder and interpreter working state, allocator slack)\n",
-                static_cast<double>(built.peak_kb) / 1e3 - heap_model);
+    std::printf("peak RSS after building minus the model: %.1f MB (allocator headers and vector slack of the model, "
+                "interpreter and builder working state, the program's code)\n",
+                static_cast<double>(built.peak_kb) / 1e3 - static_cast<double>(model.bytes) / 1e6);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "model_footprint: %s\n", e.what());
     return 1;
