@@ -19,6 +19,7 @@
 #include "html_report.hpp"
 #include "ncbridge/cc1_builder/cc1_builder.hpp"
 #include "ncbridge/common/error.hpp"
+#include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/setup/stock.hpp"
 #include "ncbridge/setup/tool_list.hpp"
@@ -37,6 +38,7 @@ struct ConvertArguments {
   std::string tools;
   std::string stock;
   std::string dialect = "rs274ngc";
+  std::string heidenhain_feed_units = "mm/min";
   std::string level = "cc1";
   std::string output;
   std::string report;
@@ -175,6 +177,13 @@ int run_convert(const ConvertArguments& args) {
     options.security_plane_z = args.security_plane;
     interpreter::Options interp;
     interp.dialect = dialect_of(args.dialect);
+    if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
+      const auto detected = interpreter::detect_dialect_file(args.program);
+      interp.dialect = detected.dialect;
+      std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
+                   std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
+    }
+    if (args.heidenhain_feed_units == "mm/s") interp.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
     interp.tools = options.tools;
     std::stringstream dirs(args.subroutine_path);
     for (std::string d; std::getline(dirs, d, ':');) {
@@ -254,6 +263,9 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML, docs/formats/stock.md); needed for a program")->check(CLI::ExistingFile);
   cmd->add_option("--dialect", args->dialect, "Program dialect")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));
+  cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units,
+                  "Unit of Heidenhain F words (mm/s for FreeCAD's Heidenhain post; never guessed)")
+      ->check(CLI::IsMember({"mm/min", "mm/s"}));
   cmd->add_option("--level", args->level, "Conformance class of the output")->check(CLI::IsMember({"cc1", "cc2"}));
   cmd->add_option("-o,--output", args->output, "Part 21 file to write")->required();
   cmd->add_option("--report", args->report, "Also write a JSON report (docs/formats/report.md)");
