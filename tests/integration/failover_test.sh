@@ -5,7 +5,7 @@
 # each file once (20 files, no temporaries).
 source "$(dirname "$0")/lib.sh"
 
-make_programs "$WORK/programs" 20 4000   # longer generated programs: the kill lands mid-batch
+make_programs "$WORK/programs" 20 30000   # longer generated programs: the kill lands mid-batch
 mkdir -p "$WORK/out" "$WORK/results"
 for stage in interpreter cc1-builder feature-recognizer step-writer; do
   for i in 1 2; do
@@ -27,8 +27,8 @@ done < "$WORK/programs/list"
 
 # Mid-batch: as soon as the first results are out, and while jobs are still in flight.
 for _ in $(seq 1 600); do
-  (( $(ls "$WORK/out" | wc -l) >= 2 )) && break
-  sleep 0.02
+  (( $(ls "$WORK/out" | wc -l) >= 1 )) && break
+  sleep 0.01
 done
 done_before=$(ls "$WORK/out" | wc -l)
 victims=()
