@@ -59,6 +59,7 @@ template <> struct NameOf<PalletShuttle> { static constexpr std::string_view val
 template <> struct NameOf<OnReset> { static constexpr std::string_view value = "ON_RESET"; };
 template <> struct NameOf<WaitSpindleOrientComplete> { static constexpr std::string_view value = "WAIT_SPINDLE_ORIENT_COMPLETE"; };
 template <> struct NameOf<Finish> { static constexpr std::string_view value = "FINISH"; };
+template <> struct NameOf<SetToolTableEntry> { static constexpr std::string_view value = "SET_TOOL_TABLE_ENTRY"; };
 }  // namespace
 
 std::string_view name_of(const Data& data) {

@@ -15,7 +15,7 @@ namespace {
 namespace w = ncbridge::pb;
 
 // Every alternative of Data has a case below; a new alternative must be added here too.
-static_assert(std::variant_size_v<Data> == 55, "canonical::Data changed: update canonical.proto and this codec");
+static_assert(std::variant_size_v<Data> == 56, "canonical::Data changed: update canonical.proto and this codec");
 
 [[noreturn]] void malformed(const std::string& what) {
   throw InputError({"<canonical batch>", 0, 0}, what);
@@ -110,7 +110,10 @@ struct DataEncoder {
   void operator()(const SelectTool& d) { out.mutable_select_tool()->set_tool(d.tool); }
   void operator()(const StartChange&) { out.mutable_start_change(); }
   void operator()(const ChangeTool& d) { out.mutable_change_tool()->set_slot(d.slot); }
-  void operator()(const ChangeToolNumber& d) { out.mutable_change_tool_number()->set_number(d.number); }
+  void operator()(const ChangeToolNumber& d) {
+    out.mutable_change_tool_number()->set_number(d.number);
+    out.mutable_change_tool_number()->set_pocket(d.pocket);
+  }
   void operator()(const Comment& d) { out.mutable_comment()->set_text(d.text); }
   void operator()(const Message& d) { out.mutable_message()->set_text(d.text); }
   void operator()(const FloodOn&) { out.mutable_flood_on(); }
@@ -136,6 +139,16 @@ struct DataEncoder {
     m->set_timeout(d.timeout);
   }
   void operator()(const Finish&) { out.mutable_finish(); }
+  void operator()(const SetToolTableEntry& d) {
+    auto* m = out.mutable_set_tool_table_entry();
+    m->set_pocket(d.pocket);
+    m->set_tool(d.tool);
+    put_pose(d.offset, *m->mutable_offset());
+    m->set_diameter(d.diameter);
+    m->set_frontangle(d.frontangle);
+    m->set_backangle(d.backangle);
+    m->set_orientation(d.orientation);
+  }
 };
 
 void put_call(const Call& call, w::Call& out) {
@@ -233,7 +246,8 @@ Data get_data(const w::Call& in, const CallContext& at) {
     case C::kSelectTool: return SelectTool{in.select_tool().tool()};
     case C::kStartChange: return StartChange{};
     case C::kChangeTool: return ChangeTool{in.change_tool().slot()};
-    case C::kChangeToolNumber: return ChangeToolNumber{in.change_tool_number().number()};
+    case C::kChangeToolNumber:
+      return ChangeToolNumber{in.change_tool_number().number(), in.change_tool_number().pocket()};
     case C::kComment: return Comment{in.comment().text()};
     case C::kMessage: return Message{in.message().text()};
     case C::kFloodOn: return FloodOn{};
@@ -258,6 +272,11 @@ Data get_data(const w::Call& in, const CallContext& at) {
       return WaitSpindleOrientComplete{m.spindle(), m.timeout()};
     }
     case C::kFinish: return Finish{};
+    case C::kSetToolTableEntry: {
+      const auto& m = in.set_tool_table_entry();
+      return SetToolTableEntry{m.pocket(), m.tool(), get_pose(m.offset()), m.diameter(),
+                               m.frontangle(), m.backangle(), m.orientation()};
+    }
     case C::DATA_NOT_SET: break;
   }
   bad_call(at, "no canonical function (unknown or missing call data)");

@@ -58,7 +58,7 @@ std::string_view plane_name(Plane p) {
 
 void print_pose6(Out& o, const Pose& p) { o.reals({p.x, p.y, p.z, p.a, p.b, p.c}); }
 
-void format(Out& o, const Data& data) {
+void format(Out& o, const Data& data, Units units) {
   // rs274 spells this one without the final H
   if (std::holds_alternative<StartSpeedFeedSynch>(data)) {
     o << "START_SPEED_FEED_SYNC";
@@ -70,7 +70,7 @@ void format(Out& o, const Data& data) {
   }
   o << '(';
   std::visit(
-      [&o](const auto& d) {
+      [&o, units](const auto& d) {
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, UseLengthUnits>) {
           o << (d.units == Units::Inches ? "CANON_UNITS_INCHES" : "CANON_UNITS_MM");
@@ -151,7 +151,20 @@ void format(Out& o, const Data& data) {
         } else if constexpr (std::is_same_v<T, ChangeTool>) {
           o.integer(d.slot);
         } else if constexpr (std::is_same_v<T, ChangeToolNumber>) {
-          o.integer(d.number);
+          o.integer(d.pocket);  // rs274 prints the pocket index
+        } else if constexpr (std::is_same_v<T, SetToolTableEntry>) {
+          const double to_inch = units == Units::Millimeters ? 1.0 / 25.4 : 1.0;
+          const Pose& p = d.offset;
+          o.integer(d.pocket) << ", ";
+          o.integer(d.tool) << ", ";
+          for (double v : {p.x * to_inch, p.y * to_inch, p.z * to_inch, p.a, p.b, p.c, p.u * to_inch,
+                           p.v * to_inch}) {
+            o.real(v) << ' ';
+          }
+          o.real(p.w * to_inch) << ", ";
+          o.real(d.frontangle) << ", ";
+          o.real(d.backangle) << ", ";
+          o.integer(d.orientation);
         } else if constexpr (std::is_same_v<T, WaitSpindleOrientComplete>) {
           o.real(d.timeout);
         } else if constexpr (std::is_same_v<T, Comment> || std::is_same_v<T, Message>) {
@@ -168,10 +181,10 @@ CanonPrinter::CanonPrinter(std::FILE* out) : out_(out) { buffer_.reserve(kFlushA
 
 CanonPrinter::~CanonPrinter() { flush(); }
 
-void CanonPrinter::format_call(const canonical::Data& data, std::string& out) {
+void CanonPrinter::format_call(const canonical::Data& data, std::string& out, canonical::Units units) {
   out.clear();
   Out o(out);
-  format(o, data);
+  format(o, data, units);
 }
 
 void CanonPrinter::write_prefix(const canonical::Source& source) {
@@ -200,8 +213,9 @@ void CanonPrinter::write_prefix(const canonical::Source& source) {
 
 void CanonPrinter::call(const canonical::Call& call) {
   write_prefix(call.source);
+  if (const auto* u = std::get_if<UseLengthUnits>(&call.data)) units_ = u->units;
   Out o(buffer_);
-  format(o, call.data);
+  format(o, call.data, units_);
   buffer_.push_back('\n');
   if (buffer_.size() >= kFlushAt) flush();
 }

@@ -12,6 +12,8 @@ Executor::Executor(const Options& options, Parameters& parameters, Sink& sink)
     : options_(options),
       params_(parameters),
       sink_(sink),
+      tools_(options.tools),
+      tool_table_given_(!options.tools.empty()),
       comp_(sink, [this](const Source& source) {
         return SourceLocation{file_ ? *file_ : std::string(), source.line, comp_column_};
       }) {}
@@ -72,6 +74,7 @@ void Executor::start() {
   s_ = ModalState{};
   // coordinate systems and G92 from the parameters (all zero without a parameter file)
   write_parameters();
+  write_tool_parameters();
   emit(UseLengthUnits{s_.units});
   emit_g5x();
   emit_g92();
@@ -379,18 +382,19 @@ double Executor::comp_radius_of_tool(const BlockCommand& b, int g) {
     if (!b.has('d')) fail(col, code + ".1 with no D word");
     return b.get('d') / 2.0;
   }
-  int tool = s_.tool_in_spindle;
+  const ToolEntry* t = &spindle_tool_;
   if (b.has('d')) {
+    int tool = 0;
     const double d = b.get('d');
     tool = static_cast<int>(d + 0.5);
     if (std::fabs(tool - d) >= 0.0001) fail(b.col('d'), code + " requires D word to be a whole number");
     if (tool < 0) fail(b.col('d'), "Negative D word tool radius index used");
-    if (tool != 0 && options_.tools.find(tool) == nullptr) {
+    if (tool != 0 && tools_.find(tool) == nullptr) {
       fail(b.col('d'), "Requested tool " + std::to_string(tool) + " not found in the tool table");
     }
+    t = tool_entry(tool);
   }
-  const setup::Tool* t = tool == 0 ? nullptr : options_.tools.find(tool);
-  return t == nullptr ? 0.0 : t->diameter / s_.mm_per_unit() / 2.0;
+  return t == nullptr ? 0.0 : t->diameter_mm / s_.mm_per_unit() / 2.0;
 }
 
 }  // namespace ncbridge::interpreter

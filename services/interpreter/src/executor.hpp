@@ -12,6 +12,7 @@
 #include "ncbridge/canonical/call.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "parameters.hpp"
+#include "tool_table.hpp"
 
 namespace ncbridge::interpreter {
 
@@ -65,10 +66,13 @@ class Executor final : public ComputedParameters {
   void do_spindle(const BlockCommand& b);
   void do_spindle_mode(const BlockCommand& b, int g);
   void do_tool_length_offset(const BlockCommand& b, int g);
+  void write_tool_parameters();
+  const ToolEntry* tool_entry(int number) const { return number == 0 ? nullptr : tools_.find(number); }
 
   // offsets.cpp
   void do_coordinate_system(int g);
   void do_g10(const BlockCommand& b);
+  void do_g10_tool(const BlockCommand& b, int l);
   void do_home(const BlockCommand& b, int g);
   void do_axis_offsets(const BlockCommand& b, int g);
   void apply_origin_change(const canonical::Pose& old_total_mm);
@@ -108,6 +112,12 @@ class Executor final : public ComputedParameters {
   // Cutter radius compensation (G41/G42): while active, moves go through it as programmed
   // geometry and every other call through comp_.other(), which holds back what LinuxCNC holds
   // back behind the pending move. s_.position stays the programmed point.
+  ToolTable tools_;               // the program's copy, edited by G10 L1/L10/L11
+  bool tool_table_given_ = false; // without a table any tool number is accepted
+  int current_pocket_ = 1;        // LinuxCNC's pocket of the loaded tool (rs274 starts at 1)
+  ToolEntry spindle_tool_{};      // pocket 0: the loaded tool's data as M6 copied it (G43 without
+                                  // H, G41/G42 without D); M61 does not copy, G10 L1 updates it
+
   CutterCompensation comp_;
   std::uint32_t comp_column_ = 0;  // column of the block's motion code, for comp errors
   bool comp_moved_ = false;        // a move was made with compensation on (radius > 0)

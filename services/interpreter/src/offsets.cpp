@@ -1,6 +1,7 @@
 // Coordinate systems and offsets: G54-G59.3, G10 L1/L2/L10/L20, G28/G30 (+.1), G92 family,
 // and the parameters that hold them (#5161-#5390).
 #include <cmath>
+#include <numbers>
 
 #include "executor.hpp"
 
@@ -13,6 +14,15 @@ constexpr double Pose::*kFields[9] = {&Pose::x, &Pose::y, &Pose::z, &Pose::a, &P
                                       &Pose::c, &Pose::u, &Pose::v, &Pose::w};
 constexpr char kLetters[9] = {'x', 'y', 'z', 'a', 'b', 'c', 'u', 'v', 'w'};
 bool is_linear(int axis) { return axis < 3 || axis > 5; }
+
+void rotate(double& x, double& y, double degrees) {
+  if (degrees == 0.0) return;
+  const double t = degrees * std::numbers::pi / 180.0;
+  const double c = std::cos(t), s = std::sin(t);
+  const double x1 = x * c - y * s;
+  y = x * s + y * c;
+  x = x1;
+}
 }  // namespace
 
 Pose Executor::origin_mm() const {
@@ -118,9 +128,90 @@ void Executor::do_g10(const BlockCommand& b) {
     return;
   }
   if (l == 1 || l == 10 || l == 11) {
-    fail(b.g_column[kGNonModal], "G10 L" + std::to_string(l) + " (tool table) is not supported: tools come from the tool list");
+    do_g10_tool(b, l);
+    return;
   }
   fail(b.col('l'), "Line with G10 does not have L2, L10, L20 or L1");
+}
+
+// G10 L1 (offsets as given), L10 (so that the current position reads the given value in the
+// active system), L11 (the same, in G59.3): LinuxCNC convert_setup_tool, on the program's copy
+// of the tool table.
+void Executor::do_g10_tool(const BlockCommand& b, int l) {
+  const int number = static_cast<int>(b.get('p') + 0.5);
+  ToolEntry* entry = tools_.find(number);
+  if (entry == nullptr) {
+    if (tool_table_given_ || number <= 0) {
+      fail(b.col('p'), "Requested tool " + std::to_string(number) + " not found in the tool table");
+    }
+    entry = &tools_.find_or_add(number);
+  }
+  bool any = b.has_axis();
+  for (char letter : {'r', 'q', 'i', 'j'}) any = any || b.has(letter);
+  if (!any) fail(b.g_column[kGNonModal], "G10 L1 without offsets has no effect");
+
+  const double k = s_.mm_per_unit();
+  Pose& offset = entry->offset_mm;
+  if (l == 1) {
+    for (int axis = 0; axis < 9; ++axis) {
+      if (b.has(kLetters[axis])) offset.*kFields[axis] = b.get(kLetters[axis]) * (is_linear(axis) ? k : 1.0);
+    }
+  } else {
+    // The current position in the destination system, without the tool length offset.
+    const int system = l == 11 ? 9 : s_.coord_system;
+    const double rotation = s_.rotation_deg[static_cast<std::size_t>(system)];
+    // (LinuxCNC find_current_in_system_without_tlo; a G10 L11 fixture ignores G92)
+    const Pose g5x = to_units(s_.g5x_mm[static_cast<std::size_t>(s_.coord_system)]);
+    const Pose destination = to_units(s_.g5x_mm[static_cast<std::size_t>(system)]);
+    const Pose g92 = s_.g92_active ? to_units(s_.g92_mm) : Pose{};
+    const Pose tool = to_units(s_.tool_offset_mm);
+    Pose t = s_.position;
+    for (auto f : kFields) t.*f += g92.*f;
+    rotate(t.x, t.y, s_.rotation());
+    for (auto f : kFields) t.*f += g5x.*f + tool.*f - destination.*f;
+    rotate(t.x, t.y, -rotation);
+    if (l != 11) {
+      for (auto f : kFields) t.*f -= g92.*f;
+    }
+    if (b.has('x') || b.has('y')) {
+      // keep the part of the old offset along the axis not given (in the rotated system)
+      double ox = offset.x / k, oy = offset.y / k;
+      rotate(ox, oy, -rotation);
+      double tx = 0, ty = 0;
+      if (b.has('x')) { tx = t.x - b.get('x'); ox = 0; }
+      if (b.has('y')) { ty = t.y - b.get('y'); oy = 0; }
+      rotate(ox, oy, rotation);
+      rotate(tx, ty, rotation);
+      offset.x = (tx + ox) * k;
+      offset.y = (ty + oy) * k;
+    }
+    for (int axis = 2; axis < 9; ++axis) {
+      if (b.has(kLetters[axis])) {
+        offset.*kFields[axis] = (t.*kFields[axis] - b.get(kLetters[axis])) * (is_linear(axis) ? k : 1.0);
+      }
+    }
+  }
+  if (b.has('r')) entry->diameter_mm = b.get('r') * k * 2.0;
+  if (b.has('i')) entry->frontangle = b.get('i');
+  if (b.has('j')) entry->backangle = b.get('j');
+  if (b.has('q')) {
+    const double q = b.get('q');
+    const int orientation = static_cast<int>(q + 0.5);
+    if (std::fabs(orientation - q) >= 0.0001) fail(b.col('q'), "Q number in G10 is not an integer");
+    if (orientation > 9) fail(b.col('q'), "Invalid tool orientation");
+    entry->orientation = orientation;
+  }
+  const int pocket = tools_.pocket_of(number);
+  const SetToolTableEntry written{pocket, number, to_units(entry->offset_mm), entry->diameter_mm / k,
+                                  entry->frontangle, entry->backangle, entry->orientation};
+  emit(written);
+  if (pocket == current_pocket_) {
+    spindle_tool_ = *entry;
+    SetToolTableEntry spindle = written;
+    spindle.pocket = 0;
+    emit(spindle);
+  }
+  write_tool_parameters();
 }
 
 void Executor::do_home(const BlockCommand& b, int g) {

@@ -11,7 +11,7 @@ void Executor::do_tool_select(const BlockCommand& b) {
   double t = b.get('t');
   int tool = static_cast<int>(std::lround(t));
   if (tool < 0) fail(b.col('t'), "Negative tool id used");
-  if (tool != 0 && options_.tools.find(tool) == nullptr && !options_.tools.empty()) {
+  if (tool != 0 && tool_table_given_ && tools_.find(tool) == nullptr) {
     fail(b.col('t'), "Requested tool " + std::to_string(tool) + " not found in the tool table");
   }
   s_.selected_tool = tool;
@@ -26,7 +26,9 @@ void Executor::do_tool_change(const BlockCommand& b) {
     if (tool < 0) fail(b.col('q'), "Need non-negative Q-word to specify tool number with M61");
     s_.tool_in_spindle = tool;
     s_.selected_tool = tool;
-    emit(ChangeToolNumber{tool});
+    current_pocket_ = tools_.pocket_of(tool);
+    emit(ChangeToolNumber{tool, current_pocket_});
+    write_tool_parameters();
     return;
   }
   if (s_.comp_side != Side::Off) fail(b.m_column[kMToolChange], "Cannot change tools with cutter radius compensation on");
@@ -34,8 +36,27 @@ void Executor::do_tool_change(const BlockCommand& b) {
   emit(StartChange{});
   emit(StopSpindleTurning{0});
   s_.spindle = Direction::Stopped;
-  emit(ChangeTool{tool});
+  // LinuxCNC passes the tool's pocket (its index in the tool table), not its number.
+  current_pocket_ = tools_.pocket_of(tool);
+  emit(ChangeTool{current_pocket_});
   s_.tool_in_spindle = tool;
+  const ToolEntry* entry = tool_entry(tool);
+  spindle_tool_ = entry != nullptr ? *entry : ToolEntry{};
+  write_tool_parameters();
+}
+
+// #5400-#5413: the tool in the spindle: number, offsets, diameter, angles, orientation. Lengths
+// in machine units (inches), as in LinuxCNC's standalone rs274.
+void Executor::write_tool_parameters() {
+  constexpr double kMachineUnitMm = 25.4;
+  const ToolEntry* t = &spindle_tool_;
+  const Pose& o = t->offset_mm;
+  const double values[14] = {static_cast<double>(s_.tool_in_spindle > 0 ? s_.tool_in_spindle : 0),
+                             o.x / kMachineUnitMm, o.y / kMachineUnitMm, o.z / kMachineUnitMm, o.a, o.b, o.c,
+                             o.u / kMachineUnitMm, o.v / kMachineUnitMm, o.w / kMachineUnitMm,
+                             t->diameter_mm / kMachineUnitMm, t->frontangle, t->backangle,
+                             static_cast<double>(t->orientation)};
+  for (int i = 0; i < 14; ++i) params_.set_numbered(5400 + i, values[i]);
 }
 
 void Executor::do_spindle(const BlockCommand& b) {
@@ -92,23 +113,18 @@ void Executor::do_tool_length_offset(const BlockCommand& b, int g) {
   if (g == 490) {
     // all zero
   } else if (g == 430) {
-    int tool = s_.tool_in_spindle;
     if (b.has('h')) {
-      double h = b.get('h');
-      tool = static_cast<int>(std::lround(h));
+      const int tool = static_cast<int>(std::lround(b.get('h')));
       if (tool < 0) fail(b.col('h'), "Negative H word tool length offset index used");
-    }
-    if (tool != 0) {
-      const setup::Tool* t = options_.tools.find(tool);
-      if (t == nullptr) {
-        if (!options_.tools.empty() || b.has('h')) {
-          fail(b.has('h') ? b.col('h') : b.g_column[kGToolLength],
-               "Tool " + std::to_string(tool) + " has no tool length offset (not in the tool table)");
+      if (tool != 0) {
+        const ToolEntry* t = tools_.find(tool);
+        if (t == nullptr) {
+          fail(b.col('h'), "Tool " + std::to_string(tool) + " has no tool length offset (not in the tool table)");
         }
-      } else {
-        offset_mm.z = t->length;
-        offset_mm.x = t->x_offset;
+        offset_mm = t->offset_mm;
       }
+    } else {
+      offset_mm = spindle_tool_.offset_mm;  // the tool in the spindle, as M6 loaded it
     }
   } else if (g == 432) {
     // G43.2: add another tool's offset to the one in effect
@@ -116,10 +132,11 @@ void Executor::do_tool_length_offset(const BlockCommand& b, int g) {
     if (!b.has('h')) fail(b.g_column[kGToolLength], "G43.2 needs an H word");
     int tool = static_cast<int>(std::lround(b.get('h')));
     if (tool != 0) {
-      const setup::Tool* t = options_.tools.find(tool);
+      const ToolEntry* t = tools_.find(tool);
       if (t == nullptr) fail(b.col('h'), "Tool " + std::to_string(tool) + " has no tool length offset (not in the tool table)");
-      offset_mm.z += t->length;
-      offset_mm.x += t->x_offset;
+      for (auto f : {&Pose::x, &Pose::y, &Pose::z, &Pose::a, &Pose::b, &Pose::c, &Pose::u, &Pose::v, &Pose::w}) {
+        offset_mm.*f += t->offset_mm.*f;
+      }
     }
   } else if (g == 431) {
     for (char letter : {'x', 'y', 'z', 'u', 'v', 'w'}) {

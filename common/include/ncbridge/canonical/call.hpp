@@ -115,8 +115,20 @@ struct WaitSpindleOrientComplete { int spindle; double timeout; };  // M19 Q: se
 struct UseToolLengthOffset { Pose offset; };
 struct SelectTool { int tool; };
 struct StartChange {};
-struct ChangeTool { int slot; };
-struct ChangeToolNumber { int number; };
+struct ChangeTool { int slot; };  // LinuxCNC's pocket index of the selected tool (see SelectTool)
+struct ChangeToolNumber {        // M61: the tool now in the spindle, without a change
+  int number;                    // its tool number
+  int pocket = 0;                // its pocket index (what LinuxCNC passes to CHANGE_TOOL_NUMBER)
+};
+// G10 L1/L10/L11 wrote a tool table entry: the pocket (LinuxCNC's index; 0 = the spindle), the
+// tool number, its offsets and diameter (lengths in current units), lathe angles, orientation.
+struct SetToolTableEntry {
+  int pocket;
+  int tool;
+  Pose offset;
+  double diameter, frontangle, backangle;
+  int orientation;
+};
 
 // ---- Miscellaneous
 struct Comment { std::string text; };
@@ -157,7 +169,7 @@ using Data = std::variant<
     EnableAdaptiveFeed, DisableAdaptiveFeed, EnableFeedHold, DisableFeedHold,
     OptionalProgramStop, ProgramStop, ProgramEnd, PalletShuttle, OnReset,
     // appended later; new alternatives go at the end so existing indices stay put
-    WaitSpindleOrientComplete, Finish>;
+    WaitSpindleOrientComplete, Finish, SetToolTableEntry>;
 
 struct Call {
   Data data;

@@ -30,13 +30,17 @@ class CanonPrinter final : public canonical::Sink {
   void print_driver_reset();
 
   // Formats one call (without counter, N column or newline) into `out`, replacing its content.
-  static void format_call(const canonical::Data& data, std::string& out);
+  // `units` are the program's length units at that call: rs274's machine works in inches, and
+  // it prints SET_TOOL_TABLE_ENTRY lengths in them.
+  static void format_call(const canonical::Data& data, std::string& out,
+                          canonical::Units units = canonical::Units::Millimeters);
 
  private:
   void write_prefix(const canonical::Source& source);
   std::FILE* out_;
   std::string buffer_;
   std::uint64_t counter_ = 1;
+  canonical::Units units_ = canonical::Units::Millimeters;
 };
 
 }  // namespace ncbridge::interpreter
