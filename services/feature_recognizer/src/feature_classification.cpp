@@ -20,6 +20,13 @@ Point2 box_center(const Box2& b) { return {(b.xmin + b.xmax) / 2, (b.ymin + b.ym
 // profile), if the group also covers everything between it and the stock's edge.
 std::optional<Region> surrounded_part(const MillingGroup& group, const Region& stock_rect) {
   const double stock_area = stock_rect.area();
+  // What the group's box leaves of the stock is certainly uncovered: a quick no for most groups.
+  const auto box = group.filled.bbox();
+  const auto stock_box = stock_rect.bbox();
+  if (!box || !stock_box) return std::nullopt;
+  const double covered_w = std::max(0.0, std::min(box->xmax, stock_box->xmax) - std::max(box->xmin, stock_box->xmin));
+  const double covered_h = std::max(0.0, std::min(box->ymax, stock_box->ymax) - std::max(box->ymin, stock_box->ymin));
+  if (stock_area - covered_w * covered_h > 0.005 * stock_area) return std::nullopt;
   if (stock_rect.minus(group.filled).area() > 0.005 * stock_area) return std::nullopt;
   const Region inside = group.filled.minus(group.area);
   std::optional<Region> best;

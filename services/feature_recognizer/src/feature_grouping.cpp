@@ -14,8 +14,12 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
   std::vector<MillingGroup> groups;
   std::optional<std::size_t> last_group;  // the group the previous layer went to
   std::vector<Region> fills;
+  std::vector<std::optional<Box2>> fill_boxes, group_boxes;  // culling before exact overlaps
   fills.reserve(layers.size());
-  for (const auto& layer : layers) fills.push_back(layer.area.filled());
+  for (const auto& layer : layers) {
+    fills.push_back(layer.area.filled());
+    fill_boxes.push_back(fills.back().bbox());
+  }
 
   for (std::size_t i = 0; i < layers.size(); ++i) {
     const auto& layer = layers[i];
@@ -25,6 +29,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
       group.operations.back().layers.push_back(i);
       group.area = group.area.united(layer.area);
       group.filled = group.filled.united(fills[i]);
+      group_boxes.at(g) = box_union(group_boxes.at(g), fill_boxes[i]);
       group.floor = std::min(group.floor, layer.z);
       last_group = g;
     };
@@ -34,6 +39,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
       auto& group = groups[*last_group];
       const auto& prev = layers[group.operations.back().layers.back()];
       if (prev.tool.number == layer.tool.number && prev.freeform == layer.freeform &&
+          boxes_overlap(fill_boxes[i], group_boxes[*last_group]) &&
           overlap_ratio(fills[i], group.filled) >= kSameFeatureOverlap) {
         add(*last_group, layer.z > prev.z + 1e-3);
         continue;
@@ -46,6 +52,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
       auto& group = groups[g];
       if (group.freeform != layer.freeform) continue;
       if (layer.z < group.floor - finishing_allowance) continue;
+      if (!boxes_overlap(fill_boxes[i], group_boxes[g])) continue;
       if (overlap_ratio(fills[i], group.filled) >= kSameFeatureOverlap) {
         add(g, true);
         attached = true;
@@ -59,6 +66,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
     group.first_workingstep = layer.workingsteps.front();
     group.sequence = layer.sequence;
     groups.push_back(std::move(group));
+    group_boxes.emplace_back();
     add(groups.size() - 1, true);
   }
   return groups;

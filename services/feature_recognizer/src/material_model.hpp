@@ -27,6 +27,7 @@ class MaterialModel {
     Region area;
     double floor;
     std::size_t order;
+    std::optional<Box2> box;  // of `area`: cuts elsewhere change nothing here
   };
   double stock_top_;
   std::vector<Cut> cuts_;

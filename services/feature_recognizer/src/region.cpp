@@ -180,6 +180,16 @@ std::vector<PolygonWithHoles> Region::polygons() const {
   return out;
 }
 
+bool boxes_overlap(const std::optional<Box2>& a, const std::optional<Box2>& b) {
+  return a && b && a->xmin < b->xmax && b->xmin < a->xmax && a->ymin < b->ymax && b->ymin < a->ymax;
+}
+
+std::optional<Box2> box_union(const std::optional<Box2>& a, const std::optional<Box2>& b) {
+  if (!a) return b;
+  if (!b) return a;
+  return Box2{std::min(a->xmin, b->xmin), std::min(a->ymin, b->ymin), std::max(a->xmax, b->xmax), std::max(a->ymax, b->ymax)};
+}
+
 double overlap_ratio(const Region& a, const Region& b) {
   const double inter = a.intersected(b).area();
   const double uni = a.area() + b.area() - inter;

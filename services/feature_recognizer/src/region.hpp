@@ -50,4 +50,9 @@ class Region {
 // area(a ∩ b) / area(a ∪ b), 0 when both are empty.
 double overlap_ratio(const Region& a, const Region& b);
 
+// Whether two boxes share more than a boundary (regions in disjoint boxes share no area): the
+// cheap test that keeps large programs from comparing every feature with every other exactly.
+bool boxes_overlap(const std::optional<Box2>& a, const std::optional<Box2>& b);
+std::optional<Box2> box_union(const std::optional<Box2>& a, const std::optional<Box2>& b);
+
 }  // namespace ncbridge::feature_recognizer
