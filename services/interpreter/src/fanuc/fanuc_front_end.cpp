@@ -751,6 +751,14 @@ bool Runner::run_block() {
     if (it != w.end()) nb.add(letter, it->second.v, it->second.column);
   }
 
+  // G65 takes any argument address; elsewhere an address nothing uses is an error, not ignored
+  const std::string_view used = special == Special::Macro ? "abcdefhijklpqrstuvwxyz" : "abcdfhijklpqrstxyz";
+  for (const auto& [letter, v] : w) {
+    bool dwell_u = letter == 'u' && special == Special::Dwell;
+    if (used.find(letter) == std::string_view::npos && !dwell_u) {
+      m_.fail(v.column, std::string("Address ") + static_cast<char>(letter - 'a' + 'A') + " is not supported here");
+    }
+  }
   switch (special) {
     case Special::Dwell: {
       double seconds = 0;

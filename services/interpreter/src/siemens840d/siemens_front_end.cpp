@@ -562,6 +562,11 @@ bool Runner::run_block(SBlock& b) {
       }
     }
   }
+  static const std::set<std::string> kWords = {"X", "Y", "Z", "A", "B", "C", "I", "J", "K", "I1", "J1", "K1", "CR",
+                                                "AR", "F", "S", "T", "D", "L", "P", "TURN", "RPL"};
+  for (const auto& [name, item] : words) {
+    if (!kWords.count(name)) m_.fail(item->column, "Address " + name + " is not supported");
+  }
   // L-subprogram call: L10 (P repeats)
   if (words.count("L")) {
     subprogram = "L" + std::to_string(std::lround(eval(b, words["L"]->value)));
