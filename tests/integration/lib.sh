@@ -60,7 +60,7 @@ start_stage() {
 wait_workers() {
   local n=$1
   for _ in $(seq 1 40); do
-    local out; out=$("$BIN/ncbridge" status --listen 0.3 2>/dev/null || true)
+    local out; out=$("$BIN/ncbridge" status --listen "${STATUS_LISTEN:-0.3}" 2>/dev/null || true)
     local ok=1
     for stage in interpreter cc1_builder feature_recognizer step_writer; do
       grep -Eq "^  $stage +$n live" <<<"$out" || ok=0
