@@ -11,10 +11,13 @@ packages=(
   libspdlog-dev libfmt-dev
   libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev
+  libssl-dev  # SHA-256 of written files (services), openssl for the DDS Security test PKI
 )
 if [[ "${1:-}" == "--tests" ]]; then
   # clang + its runtime for libFuzzer targets and sanitizer builds; iproute2 for multi-host tests.
   packages+=(clang libclang-rt-14-dev iproute2 python3)
+  # podman + runc: the container test of the services (installs in ~20 s; the test takes ~20 s).
+  packages+=(openssl podman runc)
 fi
 
 missing=()
