@@ -14,12 +14,20 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
   std::vector<MillingGroup> groups;
   std::optional<std::size_t> last_group;  // the group the previous layer went to
   std::vector<Region> fills;
-  std::vector<std::optional<Box2>> fill_boxes, group_boxes;  // culling before exact overlaps
+  // Culling before exact overlaps: regions in disjoint boxes share nothing, and
+  // area(a ∩ b) / area(a ∪ b) <= min(area) / max(area), so very different sizes cannot match.
+  std::vector<std::optional<Box2>> fill_boxes, group_boxes;
+  std::vector<double> fill_areas, group_areas;
   fills.reserve(layers.size());
   for (const auto& layer : layers) {
     fills.push_back(layer.area.filled());
     fill_boxes.push_back(fills.back().bbox());
+    fill_areas.push_back(fills.back().area());
   }
+  auto may_match = [&](std::size_t i, std::size_t g) {
+    const double a = fill_areas[i], b = group_areas[g];
+    return boxes_overlap(fill_boxes[i], group_boxes[g]) && std::min(a, b) >= kSameFeatureOverlap * std::max(a, b);
+  };
 
   for (std::size_t i = 0; i < layers.size(); ++i) {
     const auto& layer = layers[i];
@@ -30,6 +38,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
       group.area = group.area.united(layer.area);
       group.filled = group.filled.united(fills[i]);
       group_boxes.at(g) = box_union(group_boxes.at(g), fill_boxes[i]);
+      group_areas.at(g) = group.filled.area();
       group.floor = std::min(group.floor, layer.z);
       last_group = g;
     };
@@ -39,7 +48,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
       auto& group = groups[*last_group];
       const auto& prev = layers[group.operations.back().layers.back()];
       if (prev.tool.number == layer.tool.number && prev.freeform == layer.freeform &&
-          boxes_overlap(fill_boxes[i], group_boxes[*last_group]) &&
+          may_match(i, *last_group) &&
           overlap_ratio(fills[i], group.filled) >= kSameFeatureOverlap) {
         add(*last_group, layer.z > prev.z + 1e-3);
         continue;
@@ -52,7 +61,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
       auto& group = groups[g];
       if (group.freeform != layer.freeform) continue;
       if (layer.z < group.floor - finishing_allowance) continue;
-      if (!boxes_overlap(fill_boxes[i], group_boxes[g])) continue;
+      if (!may_match(i, g)) continue;
       if (overlap_ratio(fills[i], group.filled) >= kSameFeatureOverlap) {
         add(g, true);
         attached = true;
@@ -67,6 +76,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
     group.sequence = layer.sequence;
     groups.push_back(std::move(group));
     group_boxes.emplace_back();
+    group_areas.push_back(0);
     add(groups.size() - 1, true);
   }
   return groups;

@@ -18,12 +18,14 @@ namespace {
 // Step-down layers repeat the same XY path: their swept region is computed once.
 using PathKey = std::tuple<long long, std::vector<long long>>;
 
-PathKey path_key(const Layer& layer) {
+// The layer's XY paths relative to their first point: a path repeated elsewhere (a pattern of
+// equal pockets, step-downs) has the same key, and its swept area is the cached one moved.
+PathKey path_key(const Layer& layer, Point2 origin) {
   std::vector<long long> coords;
   for (const auto& path : layer.paths) {
     for (const auto& p : path) {
-      coords.push_back(std::llround(p.x * 1e4));
-      coords.push_back(std::llround(p.y * 1e4));
+      coords.push_back(std::llround((p.x - origin.x) * 1e4));
+      coords.push_back(std::llround((p.y - origin.y) * 1e4));
     }
     coords.push_back(-(1LL << 62));  // path separator
   }
@@ -31,14 +33,22 @@ PathKey path_key(const Layer& layer) {
 }
 
 void compute_layer_areas(std::vector<Layer>& layers, double tolerance) {
-  std::map<PathKey, Region> cache;
+  std::map<PathKey, std::pair<Region, Point2>> cache;  // swept area, and the origin it was made at
   for (auto& layer : layers) {
-    auto key = path_key(layer);
+    Point2 origin;
+    for (const auto& path : layer.paths) {
+      if (!path.empty()) {
+        origin = {path.front().x, path.front().y};
+        break;
+      }
+    }
+    auto key = path_key(layer, origin);
     auto it = cache.find(key);
     if (it == cache.end()) {
-      it = cache.emplace(std::move(key), swept_area(layer.xy_paths(), layer.tool.diameter / 2, tolerance)).first;
+      it = cache.emplace(std::move(key), std::pair{swept_area(layer.xy_paths(), layer.tool.diameter / 2, tolerance), origin}).first;
     }
-    layer.area = it->second;
+    const auto& [area, made_at] = it->second;
+    layer.area = made_at == origin ? area : area.translated(origin.x - made_at.x, origin.y - made_at.y);
     if (auto box = layer.area.bbox()) layer.extent = *box;
   }
 }

@@ -95,6 +95,24 @@ Region Region::united(const Region& other) const {
   return Region(std::move(impl));
 }
 
+Region Region::translated(double dx, double dy) const {
+  const Kernel::Vector_2 shift(dx, dy);
+  auto move = [&](const CPolygon& p) {
+    CPolygon out;
+    for (const auto& v : p.vertices()) out.push_back(v + shift);
+    return out;
+  };
+  std::vector<CPolygonWithHoles> parts;
+  impl_->set.polygons_with_holes(std::back_inserter(parts));
+  auto impl = std::make_shared<Impl>();
+  for (const auto& pwh : parts) {
+    CPolygonWithHoles moved(move(pwh.outer_boundary()));
+    for (const auto& hole : pwh.holes()) moved.add_hole(move(hole));
+    impl->set.insert(moved);
+  }
+  return Region(std::move(impl));
+}
+
 Region Region::intersected(const Region& other) const {
   auto impl = std::make_shared<Impl>(*impl_);
   impl->set.intersection(other.impl_->set);

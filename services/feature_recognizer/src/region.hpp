@@ -33,6 +33,7 @@ class Region {
   Region intersected(const Region& other) const;
   Region minus(const Region& other) const;
   Region filled() const;  // every hole closed
+  Region translated(double dx, double dy) const;  // exact
 
   bool empty() const;
   double area() const;
