@@ -128,18 +128,20 @@ void Executor::arc(const BlockCommand& b, int motion, const Pose& end) {
     center2 = absolute_center ? offset2 : c2 + offset2;
     double r1 = std::hypot(center1 - c1, center2 - c2);
     double r2 = std::hypot(center1 - e1, center2 - e2);
-    std::string where = "start=(" + std::string(1, ax.first_letter) + fmt4(c1) + "," + ax.second_letter + fmt4(c2) +
-                        ") center=(" + ax.first_letter + fmt4(center1) + "," + ax.second_letter + fmt4(center2) +
-                        ") end=(" + ax.first_letter + fmt4(e1) + "," + ax.second_letter + fmt4(e2) + ")";
+    auto where = [&] {  // only for the messages: formatting costs more than the arc
+      return "start=(" + std::string(1, ax.first_letter) + fmt4(c1) + "," + ax.second_letter + fmt4(c2) +
+             ") center=(" + ax.first_letter + fmt4(center1) + "," + ax.second_letter + fmt4(center2) +
+             ") end=(" + ax.first_letter + fmt4(e1) + "," + ax.second_letter + fmt4(e2) + ")";
+    };
     if (r1 < radius_tolerance || r2 < radius_tolerance) {
-      fail(b.g_column[kGMotion], "Zero-radius arc: " + where + " r1=" + fmt4(r1) + " r2=" + fmt4(r2));
+      fail(b.g_column[kGMotion], "Zero-radius arc: " + where() + " r1=" + fmt4(r1) + " r2=" + fmt4(r2));
     }
     double abs_err = std::fabs(r1 - r2);
     double rel_err = abs_err / std::max(r1, r2);
     if (abs_err > spiral_abs || rel_err > kSpiralRelTolerance) {
       char tail[128];
       std::snprintf(tail, sizeof tail, " r1=%.4f r2=%.4f abs_err=%.4g rel_err=%.4f%%", r1, r2, abs_err, rel_err * 100);
-      fail(b.g_column[kGMotion], "Radius to end of arc differs from radius to start: " + where + tail);
+      fail(b.g_column[kGMotion], "Radius to end of arc differs from radius to start: " + where() + tail);
     }
   }
   turn = motion == 20 ? -turns : turns;

@@ -4,6 +4,8 @@
 #include <string_view>
 #include <type_traits>
 
+#include "decimal_text.hpp"
+
 namespace ncbridge::interpreter {
 
 namespace {
@@ -18,9 +20,7 @@ class Out {
   Out& operator<<(std::string_view text) { s_.append(text); return *this; }
   Out& operator<<(char c) { s_.push_back(c); return *this; }
   Out& real(double v, int precision = 4) {
-    char tmp[400];
-    auto r = std::to_chars(tmp, tmp + sizeof tmp, v, std::chars_format::fixed, precision);
-    s_.append(tmp, r.ptr);
+    append_fixed(s_, v, precision);
     return *this;
   }
   Out& integer(long long v) {

@@ -1,8 +1,8 @@
 #include "rs274ngc/reader.hpp"
 
-#include <charconv>
 #include <string>
 
+#include "decimal_text.hpp"
 #include "ncbridge/common/error.hpp"
 
 namespace ncbridge::interpreter::rs274ngc {
@@ -124,36 +124,37 @@ class LineParser {
   ExprRef read_number() {
     skip_space();
     std::size_t start = pos_;
-    char buf[64];
-    std::size_t n = 0;
-    bool dot = false, digit = false;
+    bool negative = false;
     if (pos_ < s_.size() && (s_[pos_] == '+' || s_[pos_] == '-')) {
-      if (s_[pos_] == '-') buf[n++] = '-';
+      negative = s_[pos_] == '-';
       ++pos_;
       skip_space();
     }
-    while (pos_ < s_.size()) {
-      char c = s_[pos_];
+    // Digits, one decimal point, and blanks between them (LinuxCNC skips those).
+    const std::size_t digits_begin = pos_;
+    DecimalDigits digits;
+    bool point = false, any = false;
+    for (; pos_ < s_.size(); ++pos_) {
+      const char c = s_[pos_];
       if (is_digit(c)) {
-        digit = true;
+        any = true;
+        digits.digit(c, point);
       } else if (c == '.') {
-        if (dot) break;
-        dot = true;
-      } else if (c == ' ' || c == '\t') {
-        ++pos_;
-        continue;
-      } else {
+        if (point) break;
+        point = true;
+      } else if (c != ' ' && c != '\t') {
         break;
       }
-      if (n < sizeof buf - 1) buf[n++] = c;
-      ++pos_;
     }
-    if (!digit) fail(start, "Bad number format");
+    if (!any) fail(start, "Bad number format");
     double v = 0;
-    const char* first = buf;
-    // from_chars does not take a leading '+', nor a bare '.5' issue: it does accept ".5".
-    auto r = std::from_chars(first, buf + n, v);
-    if (r.ec != std::errc()) fail(start, "Bad number format");
+    if (!digits.exact_value(negative, v)) {
+      std::string text = negative ? "-" : "";
+      for (std::size_t i = digits_begin; i < pos_; ++i) {
+        if (s_[i] != ' ' && s_[i] != '\t') text.push_back(s_[i]);
+      }
+      if (!parse_decimal(text.data(), text.data() + text.size(), v)) fail(start, "Bad number format");
+    }
     ExprNode node;
     node.op = ExprOp::Number;
     node.value = v;
