@@ -33,6 +33,10 @@ void Executor::canned_cycle(const BlockCommand& b, int motion) {
   int repeats = 1;
   if (b.has('l')) {
     double l = b.get('l');
+    if (l > static_cast<double>(options_.max_loop_iterations)) {
+      fail(b.col('l'), "L word asks for more repeats than the iteration limit (" +
+                           std::to_string(options_.max_loop_iterations) + ")");
+    }
     repeats = static_cast<int>(std::lround(l));
     if (repeats == 0) fail(b.col('l'), "Cannot do zero repeats of cycle");
     if (repeats < 0) fail(b.col('l'), "Negative L word used");
@@ -185,6 +189,10 @@ void Executor::canned_cycle(const BlockCommand& b, int motion) {
         break;
       case 730:
       case 830: {
+        if ((r - cc) / q * repeats > static_cast<double>(options_.max_loop_iterations)) {
+          fail(b.has('q') ? b.col('q') : col, "Q too small: more pecks than the iteration limit (" +
+                                                  std::to_string(options_.max_loop_iterations) + ")");
+        }
         for (double depth = r - q; depth > cc; depth -= q) {
           feed(aa, bb, depth);
           if (motion == 830) traverse(aa, bb, r);

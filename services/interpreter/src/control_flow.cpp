@@ -278,7 +278,7 @@ bool ControlFlowRunner::run_statement() {
       return false;
     case StatementKind::Do: {
       if (loops_.empty() || loops_.back().label != label || loops_.back().offset != line_offset_) {
-        loops_.push_back(Loop{label, StatementKind::Do, current_file_, line_offset_, next_offset_, line_, 0});
+        loops_.push_back(Loop{label, StatementKind::Do, current_file_, line_offset_, next_offset_, line_, 0, col});
       }
       return false;
     }
@@ -287,6 +287,7 @@ bool ControlFlowRunner::run_statement() {
       if (top_is_this && loops_.back().kind == StatementKind::Do) {
         // the end of a do-while loop
         if (eval(st.condition) != 0.0) {
+          count_iteration(loops_.back());
           const Loop& l = loops_.back();
           seek(l.file, l.after_offset, l.line);
         } else {
@@ -296,7 +297,11 @@ bool ControlFlowRunner::run_statement() {
       }
       bool again = top_is_this && loops_.back().offset == line_offset_ && loops_.back().file == current_file_;
       if (eval(st.condition) != 0.0) {
-        if (!again) loops_.push_back(Loop{label, StatementKind::While, current_file_, line_offset_, next_offset_, line_, 0});
+        if (again) {
+          count_iteration(loops_.back());
+        } else {
+          loops_.push_back(Loop{label, StatementKind::While, current_file_, line_offset_, next_offset_, line_, 0, col});
+        }
       } else {
         if (again) loops_.pop_back();
         if (!skip_to(label, bit(StatementKind::EndWhile))) fail(col, "No matching endwhile for o" + label + " while");
@@ -312,9 +317,10 @@ bool ControlFlowRunner::run_statement() {
       return false;
     }
     case StatementKind::Repeat: {
-      int count = static_cast<int>(std::lround(eval(st.condition)));
-      if (count > 0) {
-        loops_.push_back(Loop{label, StatementKind::Repeat, current_file_, line_offset_, next_offset_, line_, count});
+      const double times = eval(st.condition);
+      if (times >= 0.5) {
+        const auto count = times < 9e18 ? std::llround(times) : std::int64_t{9'000'000'000'000'000'000};
+        loops_.push_back(Loop{label, StatementKind::Repeat, current_file_, line_offset_, next_offset_, line_, count, col});
       } else if (!skip_to(label, bit(StatementKind::EndRepeat))) {
         fail(col, "No matching endrepeat for o" + label + " repeat");
       }
@@ -326,6 +332,7 @@ bool ControlFlowRunner::run_statement() {
       }
       Loop& l = loops_.back();
       if (--l.remaining > 0) {
+        count_iteration(l);
         seek(l.file, l.after_offset, l.line);
       } else {
         loops_.pop_back();
@@ -364,6 +371,14 @@ bool ControlFlowRunner::run_statement() {
     default:
       fail(col, "This control statement is not supported in RS274/NGC");
   }
+}
+
+// Endless loops stop with an error at the loop's opening line.
+void ControlFlowRunner::count_iteration(Loop& loop) {
+  if (++loop.iterations < options_.max_loop_iterations) return;
+  throw InputError({files_[loop.file].name, loop.line, loop.column},
+                   "Loop o" + loop.label + " ran " + std::to_string(loop.iterations) +
+                       " times: stopped at the iteration limit (an endless loop?)");
 }
 
 void ControlFlowRunner::call(const std::string& label) {

@@ -47,7 +47,9 @@ class ControlFlowRunner {
     std::uint32_t file;
     std::uint64_t offset, after_offset;  // of the loop's opening line
     std::uint32_t line;                  // its line number
-    int remaining;
+    std::int64_t remaining;
+    std::uint32_t column = 1;            // of its statement, for errors
+    std::uint64_t iterations = 0;
   };
   struct SubDefinition {
     std::uint32_t file;
@@ -65,6 +67,7 @@ class ControlFlowRunner {
   // returns true when the program ended
   bool run_block();
   bool run_statement();
+  void count_iteration(Loop& loop);
   void call(const std::string& label);
   void do_return();
   void finish_after_end();

@@ -386,7 +386,7 @@ double Executor::comp_radius_of_tool(const BlockCommand& b, int g) {
   if (b.has('d')) {
     int tool = 0;
     const double d = b.get('d');
-    tool = static_cast<int>(d + 0.5);
+    tool = nearest_int(d);
     if (std::fabs(tool - d) >= 0.0001) fail(b.col('d'), code + " requires D word to be a whole number");
     if (tool < 0) fail(b.col('d'), "Negative D word tool radius index used");
     if (tool != 0 && tools_.find(tool) == nullptr) {

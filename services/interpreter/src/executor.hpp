@@ -98,6 +98,13 @@ class Executor final : public ComputedParameters {
   bool do_stop(const BlockCommand& b);
 
   double to_units(double mm) const { return mm / s_.mm_per_unit(); }
+  // LinuxCNC's (int)(v + 0.5), saturated instead of undefined for values no int holds.
+  static int nearest_int(double v) {
+    const double t = v + 0.5;
+    if (!(t > -2147483648.0)) return -2147483647 - 1;
+    if (!(t < 2147483647.0)) return 2147483647;
+    return static_cast<int>(t);
+  }
   canonical::Pose to_units(const canonical::Pose& mm) const;
 
   const Options& options_;

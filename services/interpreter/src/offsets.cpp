@@ -138,7 +138,7 @@ void Executor::do_g10(const BlockCommand& b) {
 // active system), L11 (the same, in G59.3): LinuxCNC convert_setup_tool, on the program's copy
 // of the tool table.
 void Executor::do_g10_tool(const BlockCommand& b, int l) {
-  const int number = static_cast<int>(b.get('p') + 0.5);
+  const int number = nearest_int(b.get('p'));
   ToolEntry* entry = tools_.find(number);
   if (entry == nullptr) {
     if (tool_table_given_ || number <= 0) {
@@ -196,7 +196,7 @@ void Executor::do_g10_tool(const BlockCommand& b, int l) {
   if (b.has('j')) entry->backangle = b.get('j');
   if (b.has('q')) {
     const double q = b.get('q');
-    const int orientation = static_cast<int>(q + 0.5);
+    const int orientation = nearest_int(q);
     if (std::fabs(orientation - q) >= 0.0001) fail(b.col('q'), "Q number in G10 is not an integer");
     if (orientation > 9) fail(b.col('q'), "Invalid tool orientation");
     entry->orientation = orientation;
