@@ -120,6 +120,16 @@ TEST(Fanuc, SubprogramWithPackedRepeatCountAndMacroLoop) {
   EXPECT_TRUE(near(loop.ends()[2], 2.0, 0.0, 0.0));
 }
 
+TEST(Fanuc, EndlessLoopStopsWithAnError) {
+  auto e = error_of("G21\nN10 G0 X1.\nGOTO 10\n", Dialect::Fanuc);
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_NE(e.message().find("endless loop"), std::string::npos);
+  auto s = error_of("G71\nLOOP: R1=R1+1\nGOTOB LOOP\n", Dialect::Siemens840D);
+  EXPECT_NE(s.message().find("endless loop"), std::string::npos);
+  auto h = error_of("0 BEGIN PGM T MM\n1 LBL 1\n2 FN 9: IF +0 EQU +0 GOTO LBL 1\n3 END PGM T MM\n", Dialect::Heidenhain);
+  EXPECT_NE(h.message().find("endless loop"), std::string::npos);
+}
+
 TEST(Fanuc, MacroAlarmStopsWithItsMessage) {
   auto e = error_of("G21\n#3000=12 (TOOL MISSING)\nM30\n", Dialect::Fanuc);
   EXPECT_EQ(e.where().line, 2u);

@@ -8,6 +8,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <set>
 
 #include "block_model.hpp"
 #include "expression.hpp"
@@ -461,10 +462,21 @@ class Runner {
   bool cycle_on_every_move_ = false;  // M89
   std::string cycle_;            // the defined cycle number
   std::map<std::string, double> cycle_values_;
+  std::set<std::string> defined_since_cycle_def_;  // Q numbers / old-style lines given since CYCL DEF
+  std::uint32_t cycle_def_column_ = 0, cycle_def_line_ = 0;
   std::uint64_t steps_ = 0;
+  std::size_t last_index_ = 0;
+  std::uint64_t backward_jumps_ = 0;
+  static constexpr std::uint64_t kMaxLoopIterations = 1'000'000;
 };
 
 void Runner::run(ProgramText program) {
+  // Q, QL and QR parameters exist from the start, at 0 (as on the control)
+  for (int i = 0; i < 2000; ++i) m_.parameters().set_named("_q" + std::to_string(i), 0.0);
+  for (int i = 0; i < 500; ++i) {
+    m_.parameters().set_named("_ql" + std::to_string(i), 0.0);
+    m_.parameters().set_named("_qr" + std::to_string(i), 0.0);
+  }
   program_ = std::move(program);
   m_.announce_file(0, program_.name);
   // labels: LBL n / LBL "name"
@@ -491,6 +503,12 @@ bool Runner::step() {
   }
   if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
   std::size_t index = pc_++;
+  // every jump back to an earlier block is a loop iteration; a program that loops a million
+  // times is taken as an endless loop (LinuxCNC's rs274 would run forever)
+  if (steps_ > 1 && index <= last_index_ && ++backward_jumps_ > kMaxLoopIterations) {
+    m_.fail(1, "Loop repeated more than " + std::to_string(kMaxLoopIterations) + " times (endless loop?)");
+  }
+  last_index_ = index;
   HBlock b;
   reader_.read(program_.line(index), static_cast<std::uint32_t>(index + 1), program_.name, b);
   m_.at(0, program_.name, static_cast<std::uint32_t>(index + 1), b.n);
@@ -594,7 +612,9 @@ bool Runner::step() {
       m_.fail(b.column, "CALL PGM (another program file) is not supported yet");
     case Kind::Assign: {
       const ExprNode& t = b.exprs.nodes[b.target];
-      m_.parameters().set_named(b.exprs.name(t.name_begin, t.name_length), eval(b, b.value));
+      std::string_view name = b.exprs.name(t.name_begin, t.name_length);
+      m_.parameters().set_named(name, eval(b, b.value));
+      defined_since_cycle_def_.insert("Q" + std::string(name.substr(2)));
       return true;
     }
     case Kind::FnJump: {
@@ -973,6 +993,9 @@ void Runner::cycle_def(const HBlock& b) {
   if (sub.empty() || sub == cycle + ".0") {
     cycle_ = cycle;
     cycle_values_.clear();
+    defined_since_cycle_def_.clear();
+    cycle_def_column_ = b.column;
+    cycle_def_line_ = m_.line();
     return;
   }
   // old-style cycle lines: "1.1 SET UP -2", "1.2 DEPTH -20", "1.5 F100" (any language)
@@ -984,18 +1007,23 @@ void Runner::cycle_def(const HBlock& b) {
   double v = 0;
   if (!lowering::read_decimal(text, p, v)) m_.fail(b.column, "CYCL DEF " + sub + " has no value");
   cycle_values_[role->second] = v;
+  defined_since_cycle_def_.insert(sub);
 }
 
 void Runner::cycle_call(std::uint32_t column) {
   if (cycle_.empty()) m_.fail(column, "Cycle call with no cycle defined");
   const lowering::CycleEntry& entry = table_.cycles.at(cycle_);
+  for (const std::string& p : entry.required) {
+    if (!defined_since_cycle_def_.count(p)) {
+      m_.fail(column, "Cycle " + cycle_ + " (" + entry.name + ") called without " + p + " in its CYCL DEF (line " +
+                          std::to_string(cycle_def_line_) + ")");
+    }
+  }
   std::map<std::string, double> v = cycle_values_;
   if (cycle_ != "1") {
     for (const auto& [q, role] : entry.roles) {
       std::string name = "_q" + q.substr(1);
-      auto value = m_.parameters().named(name);
-      if (!value) m_.fail(column, "Cycle " + cycle_ + " parameter " + q + " (" + role + ") is not set");
-      v[role] = *value;
+      v[role] = m_.parameters().named(name).value_or(0.0);
     }
   }
   auto get = [&](const char* role) -> double {

@@ -83,6 +83,9 @@ DialectTable parse_dialect_table(const std::string& yaml_text, const std::string
             for (const auto& kv : p) e.roles[kv.first.as<std::string>()] = kv.second.as<std::string>();
           }
         }
+        if (c["required"]) {
+          for (const auto& item : c["required"]) e.required.push_back(item.as<std::string>());
+        }
         t.cycles.emplace(cycle.first.as<std::string>(), std::move(e));
       }
     }

@@ -20,6 +20,7 @@ struct CycleEntry {
   std::string meta;
   std::map<std::string, std::string> roles;       // word / Q number / line number -> role
   std::vector<std::string> positional;            // Siemens: parameter names in call order
+  std::vector<std::string> required;              // parameters a definition must give
 };
 
 struct DialectTable {

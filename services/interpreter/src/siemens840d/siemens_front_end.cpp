@@ -359,6 +359,9 @@ class Runner {
   std::size_t file_ = 0, pc_ = 0;
   std::vector<Call> calls_;
   std::uint64_t steps_ = 0;
+  std::size_t last_index_ = 0;
+  std::uint64_t backward_jumps_ = 0;
+  static constexpr std::uint64_t kMaxLoopIterations = 1'000'000;
 
   bool incremental_ = false;
   int motion_ = 0;  // 0, 1, 2, 3
@@ -396,6 +399,8 @@ std::size_t Runner::add_file(ProgramText text) {
 }
 
 void Runner::run(ProgramText program) {
+  // R parameters exist from the start, at 0 (as on the control)
+  for (int i = 0; i < 1000; ++i) m_.parameters().set_named("_r" + std::to_string(i), 0.0);
   add_file(std::move(program));
   m_.at(0, files_[0].text.name, 0);
   m_.start();
@@ -416,6 +421,12 @@ bool Runner::step() {
   }
   if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
   std::size_t index = pc_++;
+  // every jump back to an earlier block is a loop iteration; a program that loops a million
+  // times is taken as an endless loop (LinuxCNC's rs274 would run forever)
+  if (steps_ > 1 && index <= last_index_ && ++backward_jumps_ > kMaxLoopIterations) {
+    m_.fail(1, "Loop repeated more than " + std::to_string(kMaxLoopIterations) + " times (endless loop?)");
+  }
+  last_index_ = index;
   SBlock b;
   reader_.declared_.clear();
   reader_.read(f.text.line(index), static_cast<std::uint32_t>(index + 1), f.text.name, b);
