@@ -1,8 +1,12 @@
 // Recognises every program of the recognition corpus and prints, per part, the recognised
 // features and the per-type precision / recall / F1 against truth; then the totals.
-//   usage: feature_recognition_score [--verbose] [source_dir shared_dir]
+//   usage: feature_recognition_score [--verbose] [--reports DIR] [source_dir shared_dir]
+// With --reports, the features are not recognised here but read from DIR/<case>.json, the
+// reports of `ncbridge convert --level cc2` (end to end through our interpreter;
+// score_end_to_end.sh makes them from the comment-stripped programs).
 #include <cstdio>
 #include <cstring>
+#include <array>
 #include <map>
 #include <string>
 
@@ -13,6 +17,22 @@ namespace fr = ncbridge::feature_recognizer;
 
 namespace {
 
+// A report's features (docs/formats/report.md) as recogniser output, for the scorer.
+std::vector<fr::RecognizedFeature> report_features(const std::string& file) {
+  std::vector<fr::RecognizedFeature> out;
+  for (const auto& t : fr::read_truth(file)) {
+    fr::RecognizedFeature f;
+    f.type = t.type;
+    f.x = t.x, f.y = t.y, f.top_z = t.top_z, f.bottom_z = t.bottom_z;
+    f.diameter = t.diameter.value_or(0);
+    if (t.type == fr::FeatureType::Slot) {
+      f.slot_ends = t.closed ? std::array{fr::SlotEnd::Radiused, fr::SlotEnd::Radiused} : std::array{fr::SlotEnd::Open, fr::SlotEnd::Open};
+    }
+    out.push_back(f);
+  }
+  return out;
+}
+
 void print_row(const char* name, const fr::TypeScore& s) {
   std::printf("  %-24s truth %3d  found %3d  matched %3d  P %.3f  R %.3f  F1 %.3f\n", name, s.truth, s.recognized,
               s.matched, s.precision(), s.recall(), s.f1());
@@ -22,10 +42,11 @@ void print_row(const char* name, const fr::TypeScore& s) {
 
 int main(int argc, char** argv) {
   bool verbose = false;
-  std::string source = NCBRIDGE_SOURCE_DIR, shared = NCBRIDGE_SHARED_DIR;
+  std::string source = NCBRIDGE_SOURCE_DIR, shared = NCBRIDGE_SHARED_DIR, reports;
   int positional = 0;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--verbose") == 0) verbose = true;
+    else if (std::strcmp(argv[i], "--reports") == 0 && i + 1 < argc) reports = argv[++i];
     else if (positional++ == 0) source = argv[i];
     else shared = argv[i];
   }
@@ -34,7 +55,8 @@ int main(int argc, char** argv) {
   int matches = 0;
   try {
     for (const auto& c : ncbridge::test_support::recognition_corpus(source, shared)) {
-      const auto features = ncbridge::test_support::recognize_case(c);
+      const auto features = reports.empty() ? ncbridge::test_support::recognize_case(c)
+                                            : report_features(reports + "/" + c.name + ".json");
       const auto truth = fr::read_truth(c.truth, c.truth_program);
       const auto s = fr::score(features, truth);
       std::printf("%s: F1 %.3f (%d truth, %d found, %d matched), mean position error %.3f mm\n", c.name.c_str(),

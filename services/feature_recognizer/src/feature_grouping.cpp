@@ -19,8 +19,16 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
   std::vector<std::optional<Box2>> fill_boxes, group_boxes;
   std::vector<double> fill_areas, group_areas;
   fills.reserve(layers.size());
-  for (const auto& layer : layers) {
-    fills.push_back(layer.area.filled());
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    // A swept area shared with an earlier layer (a step-down) shares its filled area too.
+    std::size_t same = i;
+    for (std::size_t j = i; j-- > 0 && i - j <= 8;) {
+      if (layers[j].area.same_as(layers[i].area)) {
+        same = j;
+        break;
+      }
+    }
+    fills.push_back(same < i ? fills[same] : layers[i].area.filled());
     fill_boxes.push_back(fills.back().bbox());
     fill_areas.push_back(fills.back().area());
   }

@@ -90,6 +90,8 @@ Region Region::union_of(const std::vector<Ring>& polygons) {
 }
 
 Region Region::united(const Region& other) const {
+  if (same_as(other) || other.empty()) return *this;
+  if (empty()) return other;
   auto impl = std::make_shared<Impl>(*impl_);
   impl->set.join(other.impl_->set);
   return Region(std::move(impl));
@@ -114,12 +116,15 @@ Region Region::translated(double dx, double dy) const {
 }
 
 Region Region::intersected(const Region& other) const {
+  if (same_as(other)) return *this;
   auto impl = std::make_shared<Impl>(*impl_);
   impl->set.intersection(other.impl_->set);
   return Region(std::move(impl));
 }
 
 Region Region::minus(const Region& other) const {
+  if (same_as(other)) return Region();
+  if (other.empty()) return *this;
   auto impl = std::make_shared<Impl>(*impl_);
   impl->set.difference(other.impl_->set);
   return Region(std::move(impl));

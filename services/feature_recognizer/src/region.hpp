@@ -36,6 +36,9 @@ class Region {
   Region translated(double dx, double dy) const;  // exact
 
   bool empty() const;
+  // The same value object (copies of one region): A ∪ A = A ∩ A = A and A − A = ∅ need no
+  // arithmetic, which matters when step-downs repeat one swept area many times.
+  bool same_as(const Region& other) const { return impl_ == other.impl_; }
   double area() const;
   std::optional<Box2> bbox() const;
   bool contains(Point2 p) const;  // interior or boundary

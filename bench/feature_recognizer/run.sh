@@ -1,0 +1,28 @@
+#!/bin/sh
+# Recognition time against program size: generates realistic 2.5D programs (a faced block with a
+# grid of contour-parallel pockets and drilled hole pairs, generate_milling_program) of each
+# size and times `ncbridge convert --level cc2` on them: the report's feature_recognizer share,
+# wall time and peak RSS (/usr/bin/time).
+#   usage: bench/feature_recognizer/run.sh [BUILD_DIR] [LINES...]   (default 2000 5000 10000 20000)
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+build=${1:-$here/../../build}
+[ $# -gt 0 ] && shift
+sizes=${*:-2000 5000 10000 20000}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+printf '%8s %8s %10s %14s %10s %10s\n' lines features pockets recognition_s wall_s peak_MB
+for n in $sizes; do
+  pockets=$("$build/bin/generate_milling_program" "$n" "$work/$n" | cut -d' ' -f1)
+  cd "$work/$n"
+  /usr/bin/time -f '%e %M' -o time.txt "$build/bin/ncbridge" convert part.ngc --tools tools.json --stock stock.json \
+    --level cc2 -o part.stp --report report.json 2>/dev/null
+  python3 - "$n" "$pockets" <<'PY'
+import json, sys
+r = json.load(open("report.json"))
+wall, rss = open("time.txt").read().split()[-2:]
+print("%8s %8d %10s %14.2f %10.2f %10.0f" % (sys.argv[1], len(r["features"]), sys.argv[2],
+      r["timings_ms"]["feature_recognizer"] / 1000, float(wall), int(rss) / 1024))
+PY
+  cd - > /dev/null
+done
