@@ -11,9 +11,11 @@
 //  - the Heidenhain feed unit is what the user says, never guessed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -86,6 +88,52 @@ std::vector<PartCase> part_cases() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Parts, HandWrittenPart, ::testing::ValuesIn(part_cases()), case_name);
+
+// ---- single constructs per dialect: <dialect>/NAME.<ext> against its hand-written NAME.ngc
+
+struct ConstructCase {
+  std::string dialect;
+  fs::path program;
+};
+
+std::vector<ConstructCase> construct_cases() {
+  std::vector<ConstructCase> cases;
+  for (const char* dialect : {"fanuc", "mach3", "siemens840d", "heidenhain"}) {
+    if (!fs::exists(kHere / dialect)) continue;
+    for (const auto& entry : fs::directory_iterator(kHere / dialect)) {
+      if (entry.path().extension() != ".ngc") cases.push_back({dialect, entry.path()});
+    }
+  }
+  std::sort(cases.begin(), cases.end(), [](const auto& a, const auto& b) { return a.program < b.program; });
+  return cases;
+}
+
+class DialectConstruct : public ::testing::TestWithParam<ConstructCase> {};
+
+TEST_P(DialectConstruct, MovesAsLinuxCncOnItsRs274Equivalent) {
+  const ConstructCase& c = GetParam();
+  const std::string name = c.program.stem().string();
+  ASSERT_TRUE(fs::exists(c.program.parent_path() / (name + ".ngc"))) << "no RS274/NGC equivalent for " << c.program;
+  const fs::path expected_file = kHere / "expected" / c.dialect / (name + ".rs274.canon");
+  ASSERT_TRUE(fs::exists(expected_file)) << "run regenerate.sh";
+  const auto expected = tool_path(read_file(expected_file));
+  ASSERT_GT(expected.size(), 5u);
+  const auto run = canon(c.program, c.dialect, kHere / "parts/tools.json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto comparison = compare_tool_paths(expected, tool_path(run.out), kTolerance);
+  EXPECT_TRUE(comparison.equal) << c.program << ": " << comparison.report;
+}
+
+TEST(DialectConstructs, EveryDialectHasSome) {
+  std::set<std::string> dialects;
+  for (const auto& c : construct_cases()) dialects.insert(c.dialect);
+  EXPECT_EQ(dialects.size(), 4u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Constructs, DialectConstruct, ::testing::ValuesIn(construct_cases()),
+                         [](const ::testing::TestParamInfo<ConstructCase>& info) {
+                           return info.param.dialect + "_" + info.param.program.stem().string();
+                         });
 
 // ---- the CAM corpus: every post of a part against its LinuxCNC post
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the reference outputs of the hand-written dialect parts: LinuxCNC's standalone
+# Regenerates the reference outputs of the hand-written dialect programs: LinuxCNC's standalone
 # `rs274` (Debian package linuxcnc-uspace) run on each part's RS274/NGC version
 # (parts/NAME/part.ngc) -> expected/NAME.rs274.canon. The dialect versions of the part must
 # move the tool exactly as this reference does (dialects_test.cpp); the reference comes from
@@ -25,4 +25,20 @@ for dir in "$here"/parts/*/; do
     exit 1
   }
   echo "expected/$name.rs274.canon: $(wc -l <"$here/expected/$name.rs274.canon") calls"
+done
+# single constructs per dialect: <dialect>/NAME.ngc is the hand-written RS274/NGC equivalent of
+# <dialect>/NAME.<ext> -> expected/<dialect>/NAME.rs274.canon
+for program in "$here"/{fanuc,mach3,siemens840d,heidenhain}/*.ngc; do
+  dialect="$(basename "$(dirname "$program")")"
+  name="$(basename "$program" .ngc)"
+  mkdir -p "$here/expected/$dialect"
+  out="$here/expected/$dialect/$name.rs274.canon"
+  : >"$work/params.var"
+  (cd "$(dirname "$program")" && HOME="$work/home" timeout 20 rs274 -g -n 2 -t "$here/parts/tools.rs274.tbl" \
+      -v "$work/params.var" "$program" </dev/null >"$out" 2>"$work/err") || {
+    echo "regenerate: rs274 failed on $program:" >&2
+    cat "$work/err" >&2
+    exit 1
+  }
+  echo "expected/$dialect/$name.rs274.canon: $(wc -l <"$out") calls"
 done

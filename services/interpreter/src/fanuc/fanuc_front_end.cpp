@@ -314,6 +314,7 @@ struct Value {
   double v = 0;
   std::uint32_t column = 0;
   bool had_point = true;
+  double raw = 0;  // before least-increment scaling (K is a dimension in arcs, a count in cycles)
 };
 
 class Runner {
@@ -655,7 +656,8 @@ bool Runner::run_block() {
   std::vector<Value> gs, ms;
   for (std::size_t i = 0; i < b.words.size(); ++i) {
     const Word& word = b.words[i];
-    Value v{scaled(i, eval(word.value)), word.column, line_.had_point[i]};
+    double raw = eval(word.value);
+    Value v{scaled(i, raw), word.column, line_.had_point[i], raw};
     if (word.letter == 'g') {
       gs.push_back(v);
     } else if (word.letter == 'm') {
@@ -967,7 +969,7 @@ void Runner::lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w) {
     if (role == "retract_plane") cycle_r_ = last_r_ = v.v;
     else if (role == "bottom") cycle_z_ = v.v;
     else if (role == "peck") cycle_q_ = last_q_ = v.v;
-    else if (role == "repeat") repeats = static_cast<int>(std::lround(v.v));
+    else if (role == "repeat") repeats = static_cast<int>(std::lround(v.raw));
     else if (role == "dwell") {
       if (v.had_point) {
         m_.comment("ncbridge: P" + std::to_string(v.v) + " has a decimal point: read as seconds (Fanuc takes P in ms)");
