@@ -36,6 +36,7 @@ void write(const service::JobInput& input, service::JobContext& context, const s
   const stepnc::Project project = stepnc_codec::decode_project(model.model);
   step_writer::StepncWriteOptions options;
   options.file_name = model.output_name;
+  if (model.level == wire::ModelLevel::Cc2) options.description = {"ISO 14649 CC2 program written by ncbridge"};  // as convert
   wire::Part21File file;
   file.job_id = input.job_id;
   file.level = model.level == wire::ModelLevel::Cc2 ? wire::Part21Level::Cc2 : wire::Part21Level::Cc1;

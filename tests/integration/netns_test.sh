@@ -3,9 +3,7 @@
 # host running one worker of every stage), made and removed by this test (root needed; skipped
 # with a reason otherwise). The controller simulator publishes a program live, block by block;
 # mid-run, host A's link is cut; the run must still be converted (by B) and the file reach the
-# controller, byte-identical to `ncbridge convert` of the program.
-# Note: the run asks for CC2, but until the feature recogniser's CC2 model mapping is bound the
-# file written is CC1 (services/feature_recognizer/service_main.cpp).
+# controller: a CC2 file, byte-identical to `ncbridge convert --level cc2` of the program.
 source "$(dirname "$0")/lib.sh"
 
 [[ $(id -u) == 0 ]] || { echo "SKIP: needs root for ip netns"; exit 77; }
@@ -51,13 +49,13 @@ for h in a b; do
   done
 done
 workers_seen() { on c "$BIN/ncbridge" status --listen 1.5 2>/dev/null | grep -Ec "^  [a-z0-9_]+ +2 live" || true; }
-for _ in $(seq 1 15); do seen=$(workers_seen); echo "seen=$seen"; [[ $seen == 4 ]] && break; done
+for _ in $(seq 1 15); do [[ $(workers_seen) == 4 ]] && break; done
 [[ $(workers_seen) == 4 ]] || { on c "$BIN/ncbridge" status --listen 1 || true; fail "the controller does not see two workers of each stage"; }
 
 generate_program 3 80 > "$WORK/live.ngc"
-timeout 60 "$BIN/ncbridge" convert "$WORK/live.ngc" --tools "$TOOLS_PAPER" --stock "$STOCK_PAPER" \
-  -o "$WORK/expected/ctrl1-run1.stp" 2>/dev/null || { mkdir -p "$WORK/expected"; timeout 60 "$BIN/ncbridge" convert \
-  "$WORK/live.ngc" --tools "$TOOLS_PAPER" --stock "$STOCK_PAPER" -o "$WORK/expected/ctrl1-run1.stp"; }
+mkdir -p "$WORK/expected"
+timeout 60 "$BIN/ncbridge" convert "$WORK/live.ngc" --tools "$TOOLS_PAPER" --stock "$STOCK_PAPER" --level cc2 \
+  -o "$WORK/expected/ctrl1-run1.stp" 2> "$WORK/convert.log" || fail "convert --level cc2 rejects the program" 
 blocks=$(grep -c . "$WORK/live.ngc")
 # ~2.5 s of blocks; host A is cut off 1 s into the run.
 start controller ip netns exec "ns${n}c" "$BIN/ncbridge" controller-sim "$WORK/live.ngc" --controller ctrl1 --run-id run1 \
@@ -67,6 +65,7 @@ sleep 1
 ip link set "v${n}a" down
 echo "host A cut off mid-run ($blocks blocks at 40/s)"
 wait "$controller" || fail "the controller did not get the run's file"
-cmp "$WORK/expected/ctrl1-run1.stp" "$WORK/ctrl1-run1.stp" || fail "the live run's file differs from ncbridge convert"
+cmp "$WORK/expected/ctrl1-run1.stp" "$WORK/ctrl1-run1.stp" || fail "the live run's file differs from ncbridge convert --level cc2"
+grep -q "CC2 program" "$WORK/ctrl1-run1.stp" || fail "the live run's file is not CC2"
 grep -h "ctrl1/run1: done" "$WORK"/*-b.log | head -n 4
 echo "PASS: live run converted on host B after host A was cut off; $(tail -n 1 "$WORK/controller.log")"
