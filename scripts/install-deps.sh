@@ -17,7 +17,7 @@ if [[ "${1:-}" == "--tests" ]]; then
   # clang + its runtime for libFuzzer targets and sanitizer builds; iproute2 for multi-host tests.
   packages+=(clang libclang-rt-14-dev iproute2 python3)
   # podman + runc: the container test of the services (installs in ~20 s; the test takes ~20 s).
-  packages+=(openssl podman runc)
+  packages+=(openssl podman runc procps)
 fi
 
 missing=()
