@@ -1,0 +1,316 @@
+#pragma once
+// Reading one SINUMERIK 840D block (N numbers, labels, address words with = and AC()/IC(),
+// calls with argument lists, assignments, DEF, IF/GOTOx, keywords) into items with expression
+// trees, with the column of every item for errors.
+#include <algorithm>
+#include <cstdint>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "block_model.hpp"
+#include "lowering/infix_expression.hpp"
+#include "ncbridge/common/error.hpp"
+
+namespace ncbridge::interpreter::siemens840d {
+
+using lowering::InfixParser;
+
+struct Item {
+  enum class Kind { Word, Assign, Call, Keyword } kind = Kind::Word;
+  std::string name;                 // upper case: X, CR, I1, G, M, R12, _X_HOME, CYCLE81, TRANS, GOTOF
+  ExprRef value = kNoExpr;          // Word/Assign value
+  char mode = 0;                    // 'A' for =AC(..), 'I' for =IC(..)
+  std::vector<ExprRef> arguments;   // Call: kNoExpr for an empty argument
+  std::string text;                 // Keyword operand (label), string argument (MSG, T="name")
+  std::uint32_t column = 0;
+};
+
+struct SBlock {
+  Block exprs;
+  std::vector<Item> items;
+  std::string comment;
+  bool has_comment = false;
+  std::int64_t n = -1;
+  std::string label;                // LABEL: at the start
+  // control: IF cond GOTOF label / GOTOF label
+  ExprRef condition = kNoExpr;
+};
+
+inline std::string up(std::string_view s) {
+  std::string r(s);
+  for (char& c : r) c = lowering::upper(c);
+  return r;
+}
+inline bool ident_char(char c) { return lowering::is_alpha(c) || lowering::is_digit(c) || c == '_' || c == '$'; }
+
+class Reader {
+ public:
+  explicit Reader(const std::set<std::string>& variables) : variables_(variables) {
+    syntax_.open = '(';
+    syntax_.close = ')';
+    syntax_.word_comparisons = false;
+    syntax_.symbol_comparisons = true;
+    syntax_.variable = [this](std::string_view s, std::size_t& pos, Block& b) -> ExprRef {
+      std::size_t p = pos;
+      if (p >= s.size() || !(lowering::is_alpha(s[p]) || s[p] == '_' || s[p] == '$')) return kNoExpr;
+      std::string name;
+      while (p < s.size() && ident_char(s[p])) name.push_back(lowering::upper(s[p++]));
+      std::string key;
+      if (name.size() > 1 && name[0] == 'R' && std::all_of(name.begin() + 1, name.end(), lowering::is_digit)) {
+        key = "_r" + name.substr(1);
+      } else if (variables_.count(name)) {
+        key = variable_key(name);
+      } else {
+        return kNoExpr;
+      }
+      ExprNode node;
+      node.op = ExprOp::NamedParameter;
+      node.column = static_cast<std::uint32_t>(pos + 1);
+      node.name_begin = static_cast<std::uint32_t>(b.names.size());
+      node.name_length = static_cast<std::uint32_t>(key.size());
+      b.names += key;
+      b.nodes.push_back(node);
+      pos = p;
+      return static_cast<ExprRef>(b.nodes.size() - 1);
+    };
+  }
+
+  static std::string variable_key(const std::string& name) {
+    std::string key = "_v_";
+    for (char c : name) key.push_back((c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c);
+    return key;
+  }
+
+  void read(std::string_view s, std::uint32_t line, const std::string& file, SBlock& out) {
+    s_ = s;
+    pos_ = 0;
+    line_ = line;
+    file_ = &file;
+    out = SBlock{};
+    out.exprs.line = line;
+    skip();
+    if (pos_ < s_.size() && s_[pos_] == '/') {
+      ++pos_;
+      skip();
+    }
+    if (pos_ + 1 < s_.size() && lowering::upper(s_[pos_]) == 'N' && lowering::is_digit(s_[pos_ + 1])) {
+      ++pos_;
+      std::int64_t n = 0;
+      while (pos_ < s_.size() && lowering::is_digit(s_[pos_]) && n < 1000000000) n = n * 10 + (s_[pos_++] - '0');
+      out.n = n;
+      skip();
+    }
+    // LABEL:
+    {
+      std::size_t p = pos_;
+      while (p < s_.size() && ident_char(s_[p])) ++p;
+      if (p > pos_ && p < s_.size() && s_[p] == ':' && lowering::is_alpha(s_[pos_])) {
+        out.label = up(s_.substr(pos_, p - pos_));
+        pos_ = p + 1;
+      }
+    }
+    while (skip(), pos_ < s_.size()) item(out);
+  }
+
+ private:
+  [[noreturn]] void fail(std::size_t at, const std::string& message) const {
+    throw InputError({*file_, line_, static_cast<std::uint32_t>(at + 1)}, message);
+  }
+  void skip() {
+    while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t')) ++pos_;
+  }
+  ExprRef expression(Block& b) {
+    InfixParser parser(s_, pos_, b, syntax_, *file_, line_);
+    ExprRef r = parser.expression();
+    pos_ = parser.position();
+    return r;
+  }
+  // After '=': AC(expr), IC(expr) or an expression.
+  ExprRef word_value(Block& b, char& mode) {
+    skip();
+    mode = 0;
+    std::string_view rest = s_.substr(pos_);
+    if (rest.size() > 2 && (lowering::upper(rest[0]) == 'A' || lowering::upper(rest[0]) == 'I') &&
+        lowering::upper(rest[1]) == 'C' && (rest[2] == '(' || rest[2] == ' ')) {
+      std::size_t p = pos_ + 2;
+      while (p < s_.size() && s_[p] == ' ') ++p;
+      if (p < s_.size() && s_[p] == '(') {
+        mode = lowering::upper(rest[0]);
+        pos_ = p + 1;
+        ExprRef r = expression(b);
+        skip();
+        if (pos_ >= s_.size() || s_[pos_] != ')') fail(pos_, "')' missing after AC(/IC(");
+        ++pos_;
+        return r;
+      }
+    }
+    return expression(b);
+  }
+
+  void item(SBlock& out) {
+    std::size_t start = pos_;
+    char c = s_[pos_];
+    if (c == ';') {
+      out.comment = std::string(s_.substr(pos_ + 1));
+      out.has_comment = true;
+      pos_ = s_.size();
+      return;
+    }
+    if (!(lowering::is_alpha(c) || c == '_' || c == '$')) fail(start, std::string("Unexpected character '") + c + "'");
+    std::string name;
+    std::size_t p = pos_;
+    // an address letter followed by a number: X10, G1, M3, F250., I1.46, L10
+    if (lowering::is_alpha(c) && p + 1 < s_.size() &&
+        (lowering::is_digit(s_[p + 1]) || s_[p + 1] == '.' || s_[p + 1] == '-' || s_[p + 1] == '+')) {
+      // I1=.., J1=.., K1=.., R12=.. (names with digits and '=') are not plain words
+      std::size_t q = p + 1;
+      while (q < s_.size() && lowering::is_digit(s_[q])) ++q;
+      std::size_t r = q;
+      while (r < s_.size() && s_[r] == ' ') ++r;
+      bool assignment = q > p + 1 && r < s_.size() && s_[r] == '=' && (r + 1 >= s_.size() || s_[r + 1] != '=');
+      if (!assignment) {
+        Item it;
+        it.kind = Item::Kind::Word;
+        it.name = std::string(1, lowering::upper(c));
+        it.column = static_cast<std::uint32_t>(start + 1);
+        pos_ = p + 1;
+        double v = 0;
+        std::size_t vp = pos_;
+        if (!lowering::read_decimal(s_, vp, v)) fail(start, it.name + " has a bad number");
+        it.value = InfixParser::number(out.exprs, v, static_cast<std::uint32_t>(pos_ + 1));
+        pos_ = vp;
+        out.items.push_back(it);
+        return;
+      }
+    }
+    while (p < s_.size() && ident_char(s_[p])) name.push_back(lowering::upper(s_[p++]));
+    pos_ = p;
+    skip();
+    Item it;
+    it.name = name;
+    it.column = static_cast<std::uint32_t>(start + 1);
+    if (pos_ < s_.size() && s_[pos_] == '=' && (pos_ + 1 >= s_.size() || s_[pos_ + 1] != '=')) {
+      ++pos_;
+      skip();
+      if (name == "T" && pos_ < s_.size() && s_[pos_] == '"') {
+        std::size_t close = s_.find('"', pos_ + 1);
+        if (close == std::string_view::npos) fail(pos_, "Tool name not closed by '\"'");
+        it.kind = Item::Kind::Word;
+        it.text = std::string(s_.substr(pos_ + 1, close - pos_ - 1));
+        pos_ = close + 1;
+        out.items.push_back(it);
+        return;
+      }
+      bool variable = (name.size() > 1 && name[0] == 'R' && std::all_of(name.begin() + 1, name.end(), lowering::is_digit)) ||
+                      variables_.count(name) != 0;
+      it.kind = variable ? Item::Kind::Assign : Item::Kind::Word;
+      it.value = word_value(out.exprs, it.mode);
+      out.items.push_back(it);
+      return;
+    }
+    if (pos_ < s_.size() && s_[pos_] == '(') {
+      it.kind = Item::Kind::Call;
+      ++pos_;
+      for (;;) {
+        skip();
+        if (pos_ >= s_.size()) fail(start, "')' missing in call of " + name);
+        if (s_[pos_] == ')') {
+          ++pos_;
+          break;
+        }
+        if (s_[pos_] == ',') {
+          it.arguments.push_back(kNoExpr);
+          ++pos_;
+          continue;
+        }
+        if (s_[pos_] == '"') {
+          std::size_t close = s_.find('"', pos_ + 1);
+          if (close == std::string_view::npos) fail(pos_, "String not closed by '\"'");
+          it.text = std::string(s_.substr(pos_ + 1, close - pos_ - 1));
+          pos_ = close + 1;
+        } else {
+          it.arguments.push_back(expression(out.exprs));
+        }
+        skip();
+        if (pos_ < s_.size() && s_[pos_] == ',') {
+          ++pos_;
+          skip();
+          if (pos_ < s_.size() && s_[pos_] == ')') it.arguments.push_back(kNoExpr);
+          continue;
+        }
+        if (pos_ < s_.size() && s_[pos_] == ')') {
+          ++pos_;
+          break;
+        }
+        fail(pos_, "',' or ')' expected in the arguments of " + name);
+      }
+      out.items.push_back(it);
+      return;
+    }
+    it.kind = Item::Kind::Keyword;
+    if (name == "IF") {
+      out.condition = expression(out.exprs);
+      return;
+    }
+    if (name == "GOTOF" || name == "GOTOB" || name == "GOTO" || name == "GOTOC") {
+      skip();
+      std::size_t q = pos_;
+      while (q < s_.size() && ident_char(s_[q])) ++q;
+      if (q == pos_) fail(pos_, name + " needs a label");
+      it.text = up(s_.substr(pos_, q - pos_));
+      pos_ = q;
+    }
+    if (name == "DEF") {
+      // DEF REAL A, B=5, C: declares variables (values set by the runner)
+      skip();
+      std::size_t q = pos_;
+      while (q < s_.size() && ident_char(s_[q])) ++q;
+      it.text = up(s_.substr(pos_, q - pos_));  // the type
+      pos_ = q;
+      for (;;) {
+        skip();
+        std::size_t v = pos_;
+        while (v < s_.size() && ident_char(s_[v])) ++v;
+        if (v == pos_) fail(pos_, "Variable name expected in DEF");
+        Item var;
+        var.kind = Item::Kind::Assign;
+        var.name = up(s_.substr(pos_, v - pos_));
+        var.column = static_cast<std::uint32_t>(pos_ + 1);
+        declared_.insert(var.name);
+        pos_ = v;
+        skip();
+        if (pos_ < s_.size() && s_[pos_] == '=') {
+          ++pos_;
+          var.value = expression(out.exprs);
+          skip();
+        } else {
+          var.value = InfixParser::number(out.exprs, 0.0, var.column);
+        }
+        var.text = "DEF";
+        out.items.push_back(var);
+        if (pos_ < s_.size() && s_[pos_] == ',') {
+          ++pos_;
+          continue;
+        }
+        break;
+      }
+      return;
+    }
+    out.items.push_back(it);
+  }
+
+ public:
+  std::set<std::string> declared_;  // names a DEF of this block declared
+
+ private:
+  const std::set<std::string>& variables_;
+  lowering::ExpressionSyntax syntax_;
+  std::string_view s_;
+  std::size_t pos_ = 0;
+  std::uint32_t line_ = 0;
+  const std::string* file_ = nullptr;
+};
+
+}  // namespace ncbridge::interpreter::siemens840d
