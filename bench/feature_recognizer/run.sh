@@ -6,7 +6,7 @@
 #   usage: bench/feature_recognizer/run.sh [BUILD_DIR] [LINES...]   (default 2000 5000 10000 20000)
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
-build=${1:-$here/../../build}
+build=$(cd "${1:-$here/../../build}" && pwd)
 [ $# -gt 0 ] && shift
 sizes=${*:-2000 5000 10000 20000}
 work=$(mktemp -d)
