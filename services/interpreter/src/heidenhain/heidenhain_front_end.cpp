@@ -63,6 +63,8 @@ class Runner {
   bool path(const HBlock& b, std::size_t index);
   void cycle_def(const HBlock& b);
   void cycle_call(std::uint32_t column);
+  void bore_milling(std::map<std::string, double>& v, double surface, double r, double bottom, double clearance,
+                    std::uint32_t column);
   void split_m(const HBlock& b, NeutralBlock& before, NeutralBlock& after);
   void add_feed(NeutralBlock& nb, std::uint32_t column);
   void plan_corner(const HBlock& rnd, const Point3& start, const Point3& corner, const Point3& next);
@@ -634,6 +636,54 @@ void Runner::cycle_def(const HBlock& b) {
   defined_since_cycle_def_.insert(sub);
 }
 
+// Cycle 208 BORE MILLING: from the hole centre at the set-up clearance, out to the bore circle,
+// down on a helix of at most Q334 per turn to the depth, one more full circle at the depth, back
+// to the centre and up to the clearance. Climb milling (Q351=+1) runs counter-clockwise with M3.
+void Runner::bore_milling(std::map<std::string, double>& v, double surface, double r, double bottom,
+                          double clearance, std::uint32_t column) {
+  static_cast<void>(surface);
+  const setup::Tool* tool = options_.tools.find(m_.state().tool_in_spindle);
+  if (tool == nullptr) m_.fail(column, "Cycle 208 needs the tool's diameter: the tool is not in the tool list");
+  const double diameter = v.count("nominal_diameter") ? v["nominal_diameter"] : 0.0;
+  const double radius = (diameter - tool->diameter / m_.state().mm_per_unit()) / 2.0;
+  if (radius <= 0) m_.fail(column, "Cycle 208: the tool is not smaller than the bore diameter Q335");
+  const double pitch = v.count("helix_depth") ? std::fabs(v["helix_depth"]) : 0.0;
+  if (pitch <= 0) m_.fail(column, "Cycle 208 needs the infeed per helix Q334");
+  const bool ccw = !v.count("climb_or_up_cut") || v["climb_or_up_cut"] >= 0;
+  const double f = feed(v.count("plunge_feed") ? v["plunge_feed"] : feed_);
+  if (f <= 0) m_.fail(column, "Cycle 208 has no feed rate");
+  const Point3 centre = m_.position();
+  auto run = [&](NeutralBlock& nb) {
+    if (m_.execute(nb)) m_.fail(column, "Cycle 208 ended the program");
+    nb.clear();
+  };
+  NeutralBlock nb;
+  if (clearance > centre.z + 1e-9) {
+    nb.g(0, column);
+    m_.put_axes(nb, std::nullopt, std::nullopt, clearance, column);
+    run(nb);
+  }
+  nb.g(0, column);
+  m_.put_axes(nb, std::nullopt, std::nullopt, r, column);
+  run(nb);
+  nb.g(1, column);
+  nb.add('f', f, column);
+  m_.put_axes(nb, centre.x + radius, centre.y, std::nullopt, column);
+  run(nb);
+  const int turns = std::max(1, static_cast<int>(std::ceil((r - bottom) / pitch - 1e-9)));
+  m_.put_xy_arc(nb, !ccw, centre.x + radius, centre.y, bottom, centre.x, centre.y, column);
+  nb.add('p', turns, column);
+  run(nb);
+  m_.put_xy_arc(nb, !ccw, centre.x + radius, centre.y, std::nullopt, centre.x, centre.y, column);
+  run(nb);
+  nb.g(1, column);
+  m_.put_axes(nb, centre.x, centre.y, std::nullopt, column);
+  run(nb);
+  nb.g(0, column);
+  m_.put_axes(nb, std::nullopt, std::nullopt, std::max(r, clearance), column);
+  run(nb);
+}
+
 void Runner::cycle_call(std::uint32_t column) {
   if (cycle_.empty()) m_.fail(column, "Cycle call with no cycle defined");
   const lowering::CycleEntry& entry = table_.cycles.at(cycle_);
@@ -701,6 +751,9 @@ void Runner::cycle_call(std::uint32_t column) {
       feed_rate = std::fabs(pitch) * m_.state().speed;
       if (feed_rate <= 0) m_.fail(column, "Cycle 207 needs a spindle speed to feed the pitch");
       if (pitch < 0) m_.fail(column, "Cycle 207 with a negative pitch (left-hand thread) is not supported yet");
+    } else if (cycle_ == "208") {
+      bore_milling(v, surface, r, bottom, clearance, column);
+      return;
     } else {
       m_.fail(column, "Cycle " + cycle_ + " (" + entry.name + ") is read but its motion is not supported yet");
     }
