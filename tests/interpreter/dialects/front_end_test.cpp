@@ -244,3 +244,16 @@ TEST(Heidenhain, ErrorsAreLocated) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Siemens840D, StructuredControlErrorsAreLocated) {
+  auto e = error_of("G71\nN20 WHILE R1<3\nN30 G0 X1\n", Dialect::Siemens840D);
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_NE(e.message().find("ENDWHILE"), std::string::npos);
+  e = error_of("G71\nN20 ENDFOR\nM30\n", Dialect::Siemens840D);
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 5u);
+}
+
+}  // namespace

@@ -36,6 +36,12 @@ struct SBlock {
   std::string label;                // LABEL: at the start
   // control: IF cond GOTOF label / GOTOF label
   ExprRef condition = kNoExpr;
+  // structured control: IF (without GOTO), ELSE, ENDIF, WHILE, ENDWHILE, REPEAT, UNTIL, LOOP,
+  // ENDLOOP, FOR var=from TO to, ENDFOR
+  std::string control;
+  std::uint32_t control_column = 0;
+  std::string for_variable;  // the variable's parameter key (_r1, _v_name)
+  ExprRef for_from = kNoExpr, for_to = kNoExpr;
 };
 
 inline std::string up(std::string_view s) {
@@ -250,8 +256,38 @@ class Reader {
       return;
     }
     it.kind = Item::Kind::Keyword;
-    if (name == "IF") {
+    if (name == "IF" || name == "WHILE" || name == "UNTIL") {
       out.condition = expression(out.exprs);
+      out.control = name;
+      out.control_column = it.column;
+      return;
+    }
+    if (name == "ELSE" || name == "ENDIF" || name == "ENDWHILE" || name == "REPEAT" || name == "LOOP" ||
+        name == "ENDLOOP" || name == "ENDFOR") {
+      out.control = name;
+      out.control_column = it.column;
+      return;
+    }
+    if (name == "FOR") {
+      // FOR R1=0 TO 10 / FOR NAME=... TO ...
+      skip();
+      std::size_t v = pos_;
+      while (v < s_.size() && ident_char(s_[v])) ++v;
+      std::string var = up(s_.substr(pos_, v - pos_));
+      bool r_param = var.size() > 1 && var[0] == 'R' && std::all_of(var.begin() + 1, var.end(), lowering::is_digit);
+      if (!r_param && !variables_.count(var)) fail(pos_, "FOR needs an R parameter or a DEF variable");
+      out.for_variable = r_param ? "_r" + var.substr(1) : variable_key(var);
+      pos_ = v;
+      skip();
+      if (pos_ >= s_.size() || s_[pos_] != '=') fail(pos_, "'=' missing in FOR");
+      ++pos_;
+      out.for_from = expression(out.exprs);
+      skip();
+      if (s_.substr(pos_, 2) != "TO" && s_.substr(pos_, 2) != "to") fail(pos_, "TO missing in FOR");
+      pos_ += 2;
+      out.for_to = expression(out.exprs);
+      out.control = name;
+      out.control_column = it.column;
       return;
     }
     if (name == "GOTOF" || name == "GOTOB" || name == "GOTO" || name == "GOTOC") {

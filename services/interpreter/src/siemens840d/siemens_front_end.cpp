@@ -53,6 +53,16 @@ class Runner {
   void call_subprogram(const std::string& name, int repeats, std::uint32_t column);
   bool return_from_subprogram();
   void cycle(const Item& call, const SBlock& b, bool modal_call);
+  bool run_control(SBlock& b);
+  std::string skip_structure(const std::vector<std::string>& opens, const std::vector<std::string>& ends,
+                             std::uint32_t column);
+  struct Structure {
+    std::string kind;  // WHILE, REPEAT, LOOP, FOR
+    std::size_t file, line;
+    double to;
+    std::string variable;
+  };
+  std::vector<Structure> structures_;
   void run_cycle_here(std::uint32_t column);
 
   const Options& options_;
@@ -121,6 +131,12 @@ bool Runner::step() {
       // a subprogram file may end without M17/RET
       return return_from_subprogram();
     }
+    if (!structures_.empty()) {
+      const Structure& open = structures_.back();
+      const char* end = open.kind == "WHILE" ? "ENDWHILE" : open.kind == "REPEAT" ? "UNTIL" : open.kind == "LOOP" ? "ENDLOOP" : "ENDFOR";
+      throw InputError({files_[open.file].text.name, static_cast<std::uint32_t>(open.line + 1), 1},
+                       open.kind + " without its " + end);
+    }
     if (options_.require_program_end) m_.fail(1, "File ended with no program end (M30/M2)");
     return false;
   }
@@ -188,17 +204,23 @@ bool Runner::return_from_subprogram() {
 }
 
 bool Runner::run_block(SBlock& b) {
-  if (b.condition != kNoExpr) {
-    // IF condition GOTOx label: the jump is the only statement the condition guards
+  if (b.control == "IF") {
     bool taken = eval(b, b.condition) != 0.0;
     for (const Item& it : b.items) {
+      // IF condition GOTOx label: the jump is the only statement the condition guards
       if (it.kind == Item::Kind::Keyword && it.name.rfind("GOTO", 0) == 0) {
         if (taken) jump(it.text, it.name, it.column);
         return true;
       }
     }
-    m_.fail(1, "IF without GOTOF/GOTOB (structured IF/ELSE/ENDIF is not supported yet)");
+    if (!taken) {
+      // on to the block after the matching ELSE, or after the matching ENDIF
+      std::string found = skip_structure({"IF"}, {"ELSE", "ENDIF"}, b.control_column);
+      static_cast<void>(found);
+    }
+    return true;
   }
+  if (!b.control.empty()) return run_control(b);
   NeutralBlock nb;
   if (b.has_comment) {
     nb.comment = b.comment;
@@ -510,6 +532,89 @@ bool Runner::run_block(SBlock& b) {
     return true;
   }
   if (program_return) return return_from_subprogram();
+  return true;
+}
+
+// Skips forward from the current block to the first of `ends` at the same nesting depth
+// (blocks in `opens` nest); the next block to run is the one after it. Returns which was found.
+std::string Runner::skip_structure(const std::vector<std::string>& opens, const std::vector<std::string>& ends,
+                                   std::uint32_t column) {
+  const File& f = files_[file_];
+  const std::string opener = opens.front();
+  const std::uint32_t from_line = m_.line();
+  int depth = 0;
+  SBlock scan;
+  for (std::size_t i = pc_; i < f.text.size(); ++i) {
+    reader_.declared_.clear();
+    reader_.read(f.text.line(i), static_cast<std::uint32_t>(i + 1), f.text.name, scan);
+    const std::string& c = scan.control;
+    if (c.empty()) continue;
+    bool is_goto_if = false;
+    for (const Item& it : scan.items) {
+      if (it.kind == Item::Kind::Keyword && it.name.rfind("GOTO", 0) == 0) is_goto_if = true;
+    }
+    if (std::find(opens.begin(), opens.end(), c) != opens.end() && !(c == "IF" && is_goto_if)) {
+      ++depth;
+      continue;
+    }
+    if (std::find(ends.begin(), ends.end(), c) != ends.end()) {
+      if (depth == 0) {
+        pc_ = i + 1;
+        return c;
+      }
+      if (c != "ELSE") --depth;
+    }
+  }
+  throw InputError({f.text.name, from_line, column}, opener + " without its " + ends.back());
+}
+
+bool Runner::run_control(SBlock& b) {
+  const std::string& c = b.control;
+  const std::size_t here = pc_ - 1;
+  const std::uint32_t col = b.control_column;
+  auto top_is = [&](const char* kind) {
+    return !structures_.empty() && structures_.back().kind == kind && structures_.back().file == file_;
+  };
+  if (c == "ELSE") {
+    // the IF branch ran to here: on after the ENDIF
+    skip_structure({"IF"}, {"ENDIF"}, col);
+  } else if (c == "ENDIF") {
+  } else if (c == "WHILE") {
+    bool again = top_is("WHILE") && structures_.back().line == here;
+    if (eval(b, b.condition) != 0.0) {
+      if (!again) structures_.push_back({"WHILE", file_, here, 0, ""});
+    } else {
+      if (again) structures_.pop_back();
+      skip_structure({"WHILE"}, {"ENDWHILE"}, col);
+    }
+  } else if (c == "ENDWHILE") {
+    if (!top_is("WHILE")) m_.fail(col, "ENDWHILE without WHILE");
+    pc_ = structures_.back().line;
+  } else if (c == "REPEAT" || c == "LOOP") {
+    if (!(top_is(c.c_str()) && structures_.back().line == here)) structures_.push_back({c, file_, here, 0, ""});
+  } else if (c == "UNTIL") {
+    if (!top_is("REPEAT")) m_.fail(col, "UNTIL without REPEAT");
+    if (eval(b, b.condition) != 0.0) structures_.pop_back();
+    else pc_ = structures_.back().line + 1;
+  } else if (c == "ENDLOOP") {
+    if (!top_is("LOOP")) m_.fail(col, "ENDLOOP without LOOP");
+    pc_ = structures_.back().line + 1;
+  } else if (c == "FOR") {
+    double from = eval(b, b.for_from), to = eval(b, b.for_to);
+    m_.parameters().set_named(b.for_variable, from);
+    if (from > to) {
+      skip_structure({"FOR"}, {"ENDFOR"}, col);
+    } else {
+      structures_.push_back({"FOR", file_, here, to, b.for_variable});
+    }
+  } else if (c == "ENDFOR") {
+    if (!top_is("FOR")) m_.fail(col, "ENDFOR without FOR");
+    Structure& s = structures_.back();
+    double next = m_.parameters().named(s.variable).value_or(0.0) + 1.0;
+    m_.parameters().set_named(s.variable, next);
+    if (next <= s.to) pc_ = s.line + 1;
+    else structures_.pop_back();
+  }
   return true;
 }
 
