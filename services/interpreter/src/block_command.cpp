@@ -38,7 +38,7 @@ int m_group(int m) {
   switch (m) {
     case 0: case 1: case 2: case 30: case 60: return kMStop;
     case 6: case 61: return kMToolChange;
-    case 3: case 4: case 5: case 19: return kMSpindle;
+    case 3: case 4: case 5: case 19: case 70: case 71: case 72: case 73: return kMSpindle;
     case 7: case 8: case 9: return kMCoolant;
     case 48: case 49: case 50: case 51: case 52: case 53: return kMOverride;
     default: return (m >= 100 && m <= 199) ? kMUser : -1;

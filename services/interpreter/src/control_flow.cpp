@@ -244,6 +244,7 @@ bool ControlFlowRunner::run_statement() {
       if (args.size() > static_cast<std::size_t>(Parameters::kLocalCount)) fail(col, "Too many arguments in call");
       if (frames_.size() >= kMaxCallDepth) fail(col, "Too many nested subroutine calls");
       frames_.push_back(Frame{current_file_, next_offset_, line_, loops_.size()});
+      executor_.enter_call();
       params_.push_scope();
       for (int i = 1; i <= Parameters::kLocalCount; ++i) {
         params_.set_numbered(i, static_cast<std::size_t>(i) <= args.size() ? args[static_cast<std::size_t>(i - 1)] : 0.0);
@@ -419,6 +420,7 @@ void ControlFlowRunner::call(const std::string& label) {
 void ControlFlowRunner::do_return() {
   Frame f = frames_.back();
   frames_.pop_back();
+  executor_.leave_call();
   loops_.resize(f.loop_base);
   params_.pop_scope();
   seek(f.return_file, f.return_offset, f.return_line);

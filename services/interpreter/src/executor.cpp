@@ -55,7 +55,7 @@ std::optional<double> Executor::computed(std::string_view name) const {
   if (name == "_u") return p.u;
   if (name == "_v") return p.v;
   if (name == "_w") return p.w;
-  if (name == "_line") return static_cast<double>(line_);
+  if (name == "_line") return static_cast<double>(source_.line);  // the block being read
   if (name == "_metric") return s_.units == Units::Millimeters ? 1.0 : 0.0;
   if (name == "_imperial") return s_.units == Units::Inches ? 1.0 : 0.0;
   if (name == "_absolute") return s_.distance == DistanceMode::Absolute ? 1.0 : 0.0;
@@ -64,9 +64,42 @@ std::optional<double> Executor::computed(std::string_view name) const {
   if (name == "_rpm") return s_.speed;
   if (name == "_current_tool") return static_cast<double>(s_.tool_in_spindle);
   if (name == "_selected_tool") return static_cast<double>(s_.selected_tool);
-  if (name == "_motion_mode") return s_.motion / 10.0;
+  if (name == "_motion_mode") return static_cast<double>(s_.motion);  // G code x10, as LinuxCNC
   if (name == "_coord_system") return 530.0 + 10.0 * s_.coord_system;
   if (name == "_task") return 0.0;
+  // The rest of LinuxCNC's read-only modal parameters (LinuxCNC 2.9: _vmajor 2, _vminor 9).
+  if (name == "_vmajor") return 2.9;
+  if (name == "_vminor") return 0.0;
+  if (name == "_plane") {
+    switch (s_.plane) {
+      case Plane::XY: return 170.0;
+      case Plane::XZ: return 180.0;
+      case Plane::YZ: return 190.0;
+      case Plane::UV: return 171.0;
+      case Plane::UW: return 181.0;
+      case Plane::VW: return 191.0;
+    }
+  }
+  if (name == "_ccomp") return s_.comp_side == Side::Left ? 410.0 : s_.comp_side == Side::Right ? 420.0 : 400.0;
+  if (name == "_inverse_time") return s_.feed_mode == FeedMode::InverseTime ? 1.0 : 0.0;
+  if (name == "_units_per_minute") return s_.feed_mode == FeedMode::UnitsPerMinute ? 1.0 : 0.0;
+  if (name == "_units_per_rev") return s_.feed_mode == FeedMode::UnitsPerRevolution ? 1.0 : 0.0;
+  if (name == "_tool_offset") return s_.tool_offset_mm == Pose{} ? 0.0 : 1.0;
+  if (name == "_retract_r_plane") return s_.retract == RetractMode::RPlane ? 1.0 : 0.0;
+  if (name == "_retract_old_z") return s_.retract == RetractMode::OldZ ? 1.0 : 0.0;
+  if (name == "_spindle_rpm_mode") return s_.css ? 0.0 : 1.0;
+  if (name == "_spindle_css_mode") return s_.css ? 1.0 : 0.0;
+  if (name == "_ijk_absolute_mode") return s_.arc_distance == DistanceMode::Absolute ? 1.0 : 0.0;
+  if (name == "_lathe_diameter_mode") return 0.0;
+  if (name == "_lathe_radius_mode") return 1.0;
+  if (name == "_spindle_on") return s_.spindle != Direction::Stopped ? 1.0 : 0.0;
+  if (name == "_spindle_cw") return s_.spindle == Direction::Clockwise ? 1.0 : 0.0;
+  if (name == "_mist") return s_.mist ? 1.0 : 0.0;
+  if (name == "_flood") return s_.flood ? 1.0 : 0.0;
+  if (name == "_speed_override") return s_.speed_override ? 1.0 : 0.0;
+  if (name == "_feed_override") return s_.feed_override ? 1.0 : 0.0;
+  if (name == "_adaptive_feed") return s_.adaptive_feed ? 1.0 : 0.0;
+  if (name == "_feed_hold") return s_.feed_hold ? 1.0 : 0.0;
   return std::nullopt;
 }
 
@@ -323,9 +356,11 @@ void Executor::do_overrides(const BlockCommand& b) {
       break;
     case 52:
       if (on_p) emit(EnableAdaptiveFeed{}); else emit(DisableAdaptiveFeed{});
+      s_.adaptive_feed = on_p;
       break;
     case 53:
       if (on_p) emit(EnableFeedHold{}); else emit(DisableFeedHold{});
+      s_.feed_hold = on_p;
       break;
     default: break;
   }

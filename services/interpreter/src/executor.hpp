@@ -5,6 +5,7 @@
 // canned_cycles.cpp, offsets.cpp, tools_and_spindle.cpp, program_end.cpp.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "block_command.hpp"
 #include "cutter_compensation.hpp"
@@ -64,6 +65,14 @@ class Executor final : public ComputedParameters {
   void do_tool_select(const BlockCommand& b);
   void do_tool_change(const BlockCommand& b);
   void do_spindle(const BlockCommand& b);
+
+  // modal_context.cpp: M70 save, M71 invalidate, M72 restore, M73 save and restore on return
+ public:
+  void enter_call();  // a subroutine call begins
+  void leave_call();  // it returns (restores what M73 saved in it)
+ private:
+  void do_modal_context(const BlockCommand& b, int m);
+  void restore_modal_state(const ModalState& saved);
   void do_spindle_mode(const BlockCommand& b, int g);
   void do_tool_length_offset(const BlockCommand& b, int g);
   void write_tool_parameters();
@@ -122,8 +131,15 @@ class Executor final : public ComputedParameters {
   ToolTable tools_;               // the program's copy, edited by G10 L1/L10/L11
   bool tool_table_given_ = false; // without a table any tool number is accepted
   int current_pocket_ = 1;        // LinuxCNC's pocket of the loaded tool (rs274 starts at 1)
-  ToolEntry spindle_tool_{};      // pocket 0: the loaded tool's data as M6 copied it (G43 without
-                                  // H, G41/G42 without D); M61 does not copy, G10 L1 updates it
+  ToolEntry spindle_tool_{};      // pocket 0: the loaded tool's data as M6 copied it (G41/G42
+                                  // without D, #5400-#5413); M61 does not copy, G10 L1 updates it
+
+  struct SavedContext {
+    ModalState state;
+    bool valid = false;
+    bool restore_on_return = false;
+  };
+  std::vector<SavedContext> contexts_ = std::vector<SavedContext>(1);  // one per call level
 
   CutterCompensation comp_;
   std::uint32_t comp_column_ = 0;  // column of the block's motion code, for comp errors

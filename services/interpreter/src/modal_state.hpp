@@ -28,6 +28,7 @@ struct ModalState {
   double control_tolerance = 0, naivecam_tolerance = 0;
   bool mist = false, flood = false;
   bool feed_override = true, speed_override = true;
+  bool adaptive_feed = false, feed_hold = true;   // M52, M53
 
   int coord_system = 1;             // 1..9 = G54..G59.3
   std::array<canonical::Pose, 10> g5x_mm{};  // [1..9]

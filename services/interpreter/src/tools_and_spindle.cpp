@@ -73,6 +73,9 @@ void Executor::do_spindle(const BlockCommand& b) {
       emit(StopSpindleTurning{0});
       s_.spindle = Direction::Stopped;
       break;
+    case 70: case 71: case 72: case 73:
+      do_modal_context(b, b.m[kMSpindle]);
+      break;
     default: {
       // M19: orient when R or P is given, wait when Q is (LinuxCNC convert_m).
       if (b.has('r') && (b.get('r') < 0.0 || b.get('r') > 360.0)) {
@@ -95,7 +98,7 @@ void Executor::do_spindle(const BlockCommand& b) {
 
 void Executor::do_spindle_mode(const BlockCommand& b, int g) {
   if (g == 960) {
-    double max = b.has('d') ? b.get('d') : 0.0;
+    double max = b.has('d') ? std::fabs(b.get('d')) : 1e30;  // LinuxCNC: no D, no limit
     emit(SetSpindleMode{0, max});
     s_.css = true;
   } else {
@@ -123,8 +126,10 @@ void Executor::do_tool_length_offset(const BlockCommand& b, int g) {
         }
         offset_mm = t->offset_mm;
       }
-    } else {
-      offset_mm = spindle_tool_.offset_mm;  // the tool in the spindle, as M6 loaded it
+    } else if (const ToolEntry* t = tool_entry(s_.tool_in_spindle)) {
+      // LinuxCNC reads the loaded tool's pocket (also after M61, where rs274's simulated
+      // machine forgets the M61 from the next block on)
+      offset_mm = t->offset_mm;
     }
   } else if (g == 432) {
     // G43.2: add another tool's offset to the one in effect

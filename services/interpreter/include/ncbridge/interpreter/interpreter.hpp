@@ -26,7 +26,7 @@ struct Options {
   // A loop (while, do, repeat), a canned cycle's L repeats or its pecks may run at most this
   // many times; past it interpretation stops with an error at the loop, instead of running
   // for ever (LinuxCNC has no such bound).
-  std::uint64_t max_loop_iterations = 10'000'000;
+  std::uint64_t max_loop_iterations = 1'000'000;
   // Heidenhain conversational F words: mm/min (the control's unit) unless the user says the
   // program was posted in mm/s (FreeCAD's Heidenhain post). Never guessed from the values.
   enum class FeedUnits { PerMinute, PerSecond };
