@@ -153,6 +153,9 @@ bool is_part21_file(const std::string& path) {
 
 int run_convert(const ConvertArguments& args) {
   const auto t0 = Clock::now();
+  if (!args.html.empty() && args.level != "cc2") {
+    throw InputError({args.program, 0, 0}, "--html needs --level cc2 (it draws the recognised features)");
+  }
   const bool part21_input = is_part21_file(args.program);
   if (!part21_input && (args.tools.empty() || args.stock.empty())) {
     throw InputError({args.program, 0, 0}, "converting a program needs --tools and --stock");
@@ -243,7 +246,6 @@ int run_convert(const ConvertArguments& args) {
     step_writer::write_file_atomically(args.report, report.dump(2) + "\n");
   }
   if (!args.html.empty()) {
-    if (!cc2) throw InputError({args.program, 0, 0}, "--html needs --level cc2 (it draws the recognised features)");
     HtmlReportInput page;
     page.title = std::filesystem::path(args.program).filename().string();
     page.cc2 = &*cc2;
