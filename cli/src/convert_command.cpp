@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -143,12 +144,26 @@ nlohmann::ordered_json report_of(const ConvertArguments& args, const stepnc::Pro
               {"timings_ms", timings}};
 }
 
-// A Part 21 file (a CC1 file to raise to CC2) rather than a program: by its first line.
+// A Part 21 file (a CC1 file to raise to CC2) rather than a program: it opens with
+// ISO-10303-21; after any white space and /* comments */.
 bool is_part21_file(const std::string& path) {
-  std::ifstream in(path);
-  std::string first;
-  std::getline(in, first);
-  return first.rfind("ISO-10303-21;", 0) == 0;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(8192, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  std::size_t i = 0;
+  while (i < head.size()) {
+    if (std::isspace(static_cast<unsigned char>(head[i]))) {
+      ++i;
+    } else if (head.compare(i, 2, "/*") == 0) {
+      const std::size_t end = head.find("*/", i + 2);
+      if (end == std::string::npos) return false;
+      i = end + 2;
+    } else {
+      break;
+    }
+  }
+  return head.compare(i, 13, "ISO-10303-21;") == 0;
 }
 
 int run_convert(const ConvertArguments& args) {

@@ -272,3 +272,26 @@ TEST(Cc2Convert, Cc1FileWithoutRawpieceNeedsStockAndNonsenseInputIsAnErrorWithIt
   EXPECT_EQ(no_tools.exit_code, 1);
   EXPECT_NE(no_tools.err.find("needs --tools and --stock"), std::string::npos) << no_tools.err;
 }
+
+TEST(Cc2Convert, NistExample1IsReadAsInputAndKeepsEveryWorkingstep) {
+  // ISO 14649-11 example 1 (comments before the header, no milling toolpaths, no rawpiece): the
+  // hole is recognised from its drilling cycles, the face and pocket stay as the file gave them.
+  const fs::path dir = work_dir();
+  const fs::path out = dir / "nist.stp", report = dir / "nist.json";
+  const CommandResult run = run_ncbridge("convert '" + (kShared / "corpus" / "stepnc" / "nist_ex1.stp").string() +
+                                             "' --level cc2 --stock '" + (kShared / "corpus" / "paper" / "stock.json").string() +
+                                             "' -o '" + out.string() + "' --report '" + report.string() + "'",
+                                         dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto r = nlohmann::json::parse(read_file(report));
+  int machining = 0;
+  for (const auto& w : r["workingsteps"]) machining += w["kind"] == "MACHINING_WORKINGSTEP";
+  EXPECT_EQ(machining, 5);
+  ASSERT_EQ(r["features"].size(), 1u);
+  EXPECT_EQ(r["features"][0]["type"], "round_hole");
+  const auto text = read_file(out);
+  EXPECT_NE(text.find("PLANAR_FACE('PLANAR FACE1'"), std::string::npos);
+  EXPECT_NE(text.find("CLOSED_POCKET('POCKET1'"), std::string::npos);
+  const auto diagnostics = sw::check_instances(sw::part21::read_part21_file(out).graph, schema());
+  EXPECT_EQ(sw::count_errors(diagnostics), 0u);
+}

@@ -40,6 +40,8 @@ setup::Tool tool_of(const stepnc::MillingCuttingTool& t) {
 
 Point3 point(const stepnc::CartesianPoint& p) { return {p.x, p.y, p.z}; }
 
+constexpr int kUnnumberedTools = 10000;
+
 // The canned-cycle G code the drilling-family operation stands for.
 std::uint16_t cycle_code(const stepnc::Operation& op) {
   return std::visit(
@@ -111,6 +113,9 @@ std::vector<ToolpathWorkingstep> workingsteps_from_cc1(const stepnc::Project& cc
     const auto& mop = stepnc::machining_operation(op);
     ToolpathWorkingstep ws;
     ws.tool = tool_of(cc1.tool(mop.its_tool));
+    // Files from elsewhere name tools without a T number: keep them apart (runs of one tool
+    // make one operation) with a number no program uses.
+    if (ws.tool.number == 0) ws.tool.number = kUnnumberedTools + static_cast<int>(mop.its_tool.index) + 1;
     const auto& tech = cc1.technology(mop.its_technology);
     ws.feed = tech.feedrate.value_or(0) * 60000;
     ws.spindle_rpm = std::abs(tech.spindle.value_or(0)) * 60;

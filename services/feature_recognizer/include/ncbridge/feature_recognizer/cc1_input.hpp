@@ -15,6 +15,7 @@ namespace ncbridge::feature_recognizer {
 
 // One ToolpathWorkingstep per MACHINING_WORKINGSTEP, in workplan order (so the recogniser's
 // workingstep indices are the CC1 workingsteps' positions among the machining workingsteps).
+// A tool without a T number (its id is not "T<n> ...") gets 10001 + its index in the project.
 std::vector<ToolpathWorkingstep> workingsteps_from_cc1(const stepnc::Project& cc1);
 
 // The rawpiece's bounding block, when the model has one.
