@@ -107,6 +107,17 @@ TEST(Fanuc, RotationG68TurnsProgrammedPositions) {
   EXPECT_TRUE(near(e[1], 10.0, 0.0, 0.0));
 }
 
+TEST(Fanuc, RotationInsideALocalCoordinateSystemAndBack) {
+  // G52 shifts by (10, 0); G68 turns 90 degrees about the local origin; G69 keeps the shift
+  auto sink = run("G21 G90 G52 X10. Y0\nG68 X0 Y0 R90.\nG0 X5. Y0\nG69\nG0 X5. Y0\nG52 X0 Y0\nG0 X5. Y0\nM30\n",
+                  Dialect::Fanuc);
+  auto e = sink.ends();
+  ASSERT_EQ(e.size(), 3u);
+  EXPECT_TRUE(near(e[0], 10.0, 5.0, 0.0));
+  EXPECT_TRUE(near(e[1], 15.0, 0.0, 0.0));
+  EXPECT_TRUE(near(e[2], 5.0, 0.0, 0.0));
+}
+
 TEST(Fanuc, SubprogramWithPackedRepeatCountAndMacroLoop) {
   const std::string program =
       "O0001\nG21 G90 G0 X0 Y0 Z0\nM98 P31000\nM30\n"

@@ -119,6 +119,7 @@ class Runner {
   std::optional<double> cycle_r_, cycle_z_, cycle_q_, cycle_p_;
   std::optional<double> last_r_, last_q_;
   double initial_z_ = 0;
+  Point3 local_offset_;  // G52
 };
 
 std::size_t Runner::add_file(ProgramText text) {
@@ -199,9 +200,7 @@ bool Runner::step() {
 }
 
 void Runner::assign(const Assignment& a, double value) {
-  const ExprNode& target = line_.block.nodes[a.target];
   int number = parameter_number(line_.block, a.target, m_.parameters(), m_.file_name());
-  static_cast<void>(target);
   if (number == 3000) {
     std::string text = line_.block.comments.empty() ? std::string() : std::string(line_.block.comments.front().text);
     m_.fail(a.column, "Macro alarm " + std::to_string(static_cast<long>(value)) + (text.empty() ? "" : ": " + text));
@@ -532,9 +531,7 @@ bool Runner::run_block() {
         double cy = w.count('y') ? w['y'].v : here.y;
         double angle = w.count('r') ? w['r'].v : 0.0;
         Point3 centre = m_.frame.to_executor({cx, cy, 0});
-        Point3 base_offset = m_.frame.offset;
-        double base_rotation = m_.frame.rotation_deg;
-        static_cast<void>(base_rotation);
+        Point3 base_offset = local_offset_;
         m_.frame.rotation_deg = (incremental_ ? m_.frame.rotation_deg : 0.0) + angle;
         // the centre stays where it is: offset = centre - R * (centre - base offset)
         lowering::Frame r{{0, 0, 0}, m_.frame.rotation_deg};
@@ -543,13 +540,15 @@ bool Runner::run_block() {
         m_.frame.offset = {centre.x - rr.x, centre.y - rr.y, base_offset.z};
       } else {
         m_.frame.rotation_deg = 0;
-        m_.frame.offset = {0, 0, 0};
+        m_.frame.offset = local_offset_;
       }
       break;
     }
     case Special::Local: {
       // G52: local coordinate system shift relative to the work system (absolute values)
-      m_.frame.offset = {w.count('x') ? w['x'].v : 0.0, w.count('y') ? w['y'].v : 0.0, w.count('z') ? w['z'].v : 0.0};
+      local_offset_ = {w.count('x') ? w['x'].v : 0.0, w.count('y') ? w['y'].v : 0.0, w.count('z') ? w['z'].v : 0.0};
+      if (m_.frame.rotation_deg != 0) m_.fail(gs.front().column, "G52 while G68 rotation is active is not supported");
+      m_.frame.offset = local_offset_;
       break;
     }
     case Special::DataSetting:

@@ -63,8 +63,7 @@ class Runner {
   bool path(const HBlock& b, std::size_t index);
   void cycle_def(const HBlock& b);
   void cycle_call(std::uint32_t column);
-  void bore_milling(std::map<std::string, double>& v, double surface, double r, double bottom, double clearance,
-                    std::uint32_t column);
+  void bore_milling(std::map<std::string, double>& v, double r, double bottom, double clearance, std::uint32_t column);
   void split_m(const HBlock& b, NeutralBlock& before, NeutralBlock& after);
   void add_feed(NeutralBlock& nb, std::uint32_t column);
   void plan_corner(const HBlock& rnd, const Point3& start, const Point3& corner, const Point3& next);
@@ -89,7 +88,7 @@ class Runner {
   std::string cycle_;            // the defined cycle number
   std::map<std::string, double> cycle_values_;
   std::set<std::string> defined_since_cycle_def_;  // Q numbers / old-style lines given since CYCL DEF
-  std::uint32_t cycle_def_column_ = 0, cycle_def_line_ = 0;
+  std::uint32_t cycle_def_line_ = 0;
   std::uint64_t steps_ = 0;
   std::size_t last_index_ = 0;
   std::uint64_t backward_jumps_ = 0;
@@ -620,7 +619,6 @@ void Runner::cycle_def(const HBlock& b) {
     cycle_ = cycle;
     cycle_values_.clear();
     defined_since_cycle_def_.clear();
-    cycle_def_column_ = b.column;
     cycle_def_line_ = m_.line();
     return;
   }
@@ -639,9 +637,8 @@ void Runner::cycle_def(const HBlock& b) {
 // Cycle 208 BORE MILLING: from the hole centre at the set-up clearance, out to the bore circle,
 // down on a helix of at most Q334 per turn to the depth, one more full circle at the depth, back
 // to the centre and up to the clearance. Climb milling (Q351=+1) runs counter-clockwise with M3.
-void Runner::bore_milling(std::map<std::string, double>& v, double surface, double r, double bottom,
-                          double clearance, std::uint32_t column) {
-  static_cast<void>(surface);
+void Runner::bore_milling(std::map<std::string, double>& v, double r, double bottom, double clearance,
+                          std::uint32_t column) {
   const setup::Tool* tool = options_.tools.find(m_.state().tool_in_spindle);
   if (tool == nullptr) m_.fail(column, "Cycle 208 needs the tool's diameter: the tool is not in the tool list");
   const double diameter = v.count("nominal_diameter") ? v["nominal_diameter"] : 0.0;
@@ -752,7 +749,7 @@ void Runner::cycle_call(std::uint32_t column) {
       if (feed_rate <= 0) m_.fail(column, "Cycle 207 needs a spindle speed to feed the pitch");
       if (pitch < 0) m_.fail(column, "Cycle 207 with a negative pitch (left-hand thread) is not supported yet");
     } else if (cycle_ == "208") {
-      bore_milling(v, surface, r, bottom, clearance, column);
+      bore_milling(v, r, bottom, clearance, column);
       return;
     } else {
       m_.fail(column, "Cycle " + cycle_ + " (" + entry.name + ") is read but its motion is not supported yet");
@@ -765,7 +762,6 @@ void Runner::cycle_call(std::uint32_t column) {
     }
     nb.g(second > setup ? 98 : 99, column);
   }
-  static_cast<void>(clearance);
   double f = cycle_ == "207" ? feed_rate : feed(feed_rate);
   if (f <= 0) m_.fail(column, "Cycle " + cycle_ + " has no feed rate");
   nb.add('f', f, column);

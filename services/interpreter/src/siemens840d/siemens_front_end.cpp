@@ -215,8 +215,7 @@ bool Runner::run_block(SBlock& b) {
     }
     if (!taken) {
       // on to the block after the matching ELSE, or after the matching ENDIF
-      std::string found = skip_structure({"IF"}, {"ELSE", "ENDIF"}, b.control_column);
-      static_cast<void>(found);
+      skip_structure({"IF"}, {"ELSE", "ENDIF"}, b.control_column);
     }
     return true;
   }
