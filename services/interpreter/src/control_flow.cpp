@@ -150,7 +150,9 @@ bool ControlFlowRunner::run_block() {
   if (!command_.comment.empty() && !command_.comment_is_message) {
     std::string_view text = command_.comment;
     while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-    if (iequals_prefix(text, "debug,")) {
+    if (iequals_prefix(text, "debug,") && params_.numbered(5599) == 0.0) {
+      command_.comment = {};
+    } else if (iequals_prefix(text, "debug,")) {
       message_text_.clear();
       std::string_view rest = text.substr(6);
       for (std::size_t i = 0; i < rest.size(); ++i) {

@@ -14,7 +14,8 @@ Executor::Executor(const Options& options, Parameters& parameters, Sink& sink)
       sink_(sink),
       tools_(options.tools),
       tool_table_given_(!options.tools.empty()),
-      comp_(sink, [this](const Source& source) {
+      comp_out_(sink),
+      comp_(comp_out_, [this](const Source& source) {
         return SourceLocation{file_ ? *file_ : std::string(), source.line, comp_column_};
       }) {}
 
@@ -32,6 +33,20 @@ void Executor::emit(Data data) {
   } else {
     sink_.call(call);
   }
+}
+
+void Executor::CompPlaneSink::call(const Call& call) {
+  if (xz) {
+    if (const auto* feed = std::get_if<StraightFeed>(&call.data)) {
+      out_.call(Call{StraightFeed{comp_to_xz(feed->end)}, call.source, call.cycle});
+      return;
+    }
+    if (const auto* traverse = std::get_if<StraightTraverse>(&call.data)) {
+      out_.call(Call{StraightTraverse{comp_to_xz(traverse->end)}, call.source, call.cycle});
+      return;
+    }
+  }
+  out_.call(call);
 }
 
 void Executor::end_of_file() {
@@ -388,7 +403,7 @@ void Executor::do_cutter_comp(const BlockCommand& b, int g) {
     const bool was_active = comp_.active();
     const bool moved = was_active && comp_.radius() > 0.0 && comp_moved_;
     comp_.stop(source_);
-    if (was_active) s_.position = comp_.programmed_position();
+    if (was_active) s_.position = from_comp(comp_.programmed_position());
     if (moved) arc_not_allowed_ = true;
     s_.comp_side = Side::Off;
     s_.comp_radius = 0;
@@ -396,12 +411,15 @@ void Executor::do_cutter_comp(const BlockCommand& b, int g) {
     return;
   }
   const std::uint32_t col = b.g_column[kGCutterComp];
-  if (s_.plane != Plane::XY) fail(col, "Cutter radius compensation allowed only in XY, XZ planes");
+  if (s_.plane != Plane::XY && s_.plane != Plane::XZ) {
+    fail(col, "Cutter radius compensation allowed only in XY, XZ planes");
+  }
   if (s_.comp_side != Side::Off) fail(col, "Cannot turn cutter radius comp on when on");
   const double radius = comp_radius_of_tool(b, g);
   const Side side = (g == 410 || g == 411) ? Side::Left : Side::Right;
+  comp_out_.xz = s_.plane == Plane::XZ;
   comp_.set_length_units(s_.units);
-  comp_.set_position(s_.position);
+  comp_.set_position(to_comp(s_.position));
   comp_.start(side, radius, source_);
   s_.comp_side = comp_.side();
   s_.comp_radius = comp_.radius();

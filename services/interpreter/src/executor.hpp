@@ -141,6 +141,23 @@ class Executor final : public ComputedParameters {
   };
   std::vector<SavedContext> contexts_ = std::vector<SavedContext>(1);  // one per call level
 
+  // The compensator works in the XY plane. In the XZ plane (G18) it is given Z as X and X as Y
+  // (and Y as Z), which is also how ARC_FEED names the XZ plane's axes, and this sink turns the
+  // straight moves it makes back.
+  class CompPlaneSink final : public canonical::Sink {
+   public:
+    explicit CompPlaneSink(canonical::Sink& out) : out_(out) {}
+    void call(const canonical::Call& call) override;
+    bool xz = false;
+
+   private:
+    canonical::Sink& out_;
+  };
+  static canonical::Pose xz_to_comp(const canonical::Pose& p) { return {p.z, p.x, p.y, p.a, p.b, p.c, p.u, p.v, p.w}; }
+  static canonical::Pose comp_to_xz(const canonical::Pose& p) { return {p.y, p.z, p.x, p.a, p.b, p.c, p.u, p.v, p.w}; }
+  canonical::Pose to_comp(const canonical::Pose& p) const { return comp_out_.xz ? xz_to_comp(p) : p; }
+  canonical::Pose from_comp(const canonical::Pose& p) const { return comp_out_.xz ? comp_to_xz(p) : p; }
+  CompPlaneSink comp_out_;
   CutterCompensation comp_;
   std::uint32_t comp_column_ = 0;  // column of the block's motion code, for comp errors
   bool comp_moved_ = false;        // a move was made with compensation on (radius > 0)

@@ -56,7 +56,7 @@ void Executor::straight(bool feed, const Pose& end, const BlockCommand* b) {
   }
   if (comp_.active()) {
     if (comp_.radius() > 0.0) comp_moved_ = true;
-    comp_.straight(feed, end, source_);
+    comp_.straight(feed, to_comp(end), source_);
   } else if (feed) {
     emit(StraightFeed{end});
   } else {

@@ -4,7 +4,9 @@
 
 namespace ncbridge::interpreter {
 
-Parameters::Parameters() : numbered_(kCount, 0.0) {}
+Parameters::Parameters() : numbered_(kCount, 0.0) {
+  numbered_[5599] = 1.0;  // LinuxCNC: (DEBUG,...) messages are shown while #5599 is not 0
+}
 
 bool Parameters::valid_number(double number) {
   return number >= 1 && number < kCount && std::fabs(number - std::round(number)) < 1e-4;
