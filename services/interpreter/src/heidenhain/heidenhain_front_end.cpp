@@ -313,17 +313,29 @@ bool Runner::tool_call(const HBlock& b) {
   if (b.text == "X" && m_.state().plane != canonical::Plane::YZ) nb.g(19, b.column);
   if (b.text == "Y" && m_.state().plane != canonical::Plane::XZ) nb.g(18, b.column);
   if (b.text == "Z" && m_.state().plane != canonical::Plane::XY) nb.g(17, b.column);
-  if (tool != m_.state().tool_in_spindle || find(b, "T") || !b.tool_name.empty()) {
-    nb.add('t', tool, b.column);
-    nb.m(6, b.column);
-    nb.g(43, b.column);
-    nb.add('h', tool, b.column);
-  }
+  double delta_length = 0;
   for (const HWord& w : b.words) {
     if (w.name == "S") nb.add('s', eval(b, w.value), w.column);
     else if (w.name == "F") feed_ = eval(b, w.value);
-    else if ((w.name == "DL" || w.name == "DR") && w.value != kNoExpr && eval(b, w.value) != 0.0) {
-      m_.fail(w.column, w.name + " (tool oversize) is not supported yet");
+    else if (w.name == "DL" && w.value != kNoExpr) delta_length = eval(b, w.value);
+    else if (w.name == "DR" && w.value != kNoExpr && eval(b, w.value) != 0.0) {
+      // a radius oversize acts through radius compensation (RL/RR) only
+      m_.comment("ncbridge: TOOL CALL DR" + std::to_string(eval(b, w.value)) + " noted: it changes compensated paths only");
+    }
+  }
+  if (tool != m_.state().tool_in_spindle || find(b, "T") || !b.tool_name.empty() || delta_length != 0) {
+    nb.add('t', tool, b.column);
+    nb.m(6, b.column);
+    nb.g(43, b.column);
+    if (delta_length == 0) {
+      nb.add('h', tool, b.column);
+    } else {
+      // DL: the tool's length plus the oversize, as a dynamic length offset (G43.1)
+      const setup::Tool* t = options_.tools.find(tool);
+      if (t == nullptr) m_.fail(b.column, "TOOL CALL DL needs the tool's length: tool " + std::to_string(tool) + " is not in the tool list");
+      nb.words.pop_back();
+      nb.g(43.1, b.column);
+      nb.add('z', t->length / m_.state().mm_per_unit() + delta_length, b.column);
     }
   }
   return !m_.execute(nb);

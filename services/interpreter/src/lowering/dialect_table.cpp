@@ -68,8 +68,10 @@ DialectTable parse_dialect_table(const std::string& yaml_text, const std::string
         for (const auto& kv : cycle.second) words[kv.first.as<std::string>()] = kv.second.as<std::string>();
       }
     }
-    if (root["cycles"]) {
-      for (const auto& cycle : root["cycles"]) {
+    for (const char* section : {"cycles", "patterns"}) {
+      if (!root[section]) continue;
+      auto& target = std::string(section) == "cycles" ? t.cycles : t.patterns;
+      for (const auto& cycle : root[section]) {
         CycleEntry e;
         const YAML::Node& c = cycle.second;
         if (c["name"]) e.name = c["name"].as<std::string>();
@@ -86,7 +88,7 @@ DialectTable parse_dialect_table(const std::string& yaml_text, const std::string
         if (c["required"]) {
           for (const auto& item : c["required"]) e.required.push_back(item.as<std::string>());
         }
-        t.cycles.emplace(cycle.first.as<std::string>(), std::move(e));
+        target.emplace(cycle.first.as<std::string>(), std::move(e));
       }
     }
     for (const char* key : {"unsupported_cycles", "ignored_calls"}) {

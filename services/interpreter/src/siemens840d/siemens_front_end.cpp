@@ -53,6 +53,7 @@ class Runner {
   void call_subprogram(const std::string& name, int repeats, std::uint32_t column);
   bool return_from_subprogram();
   void cycle(const Item& call, const SBlock& b, bool modal_call);
+  void hole_pattern(const Item& call, const SBlock& b);
   bool run_control(SBlock& b);
   std::string skip_structure(const std::vector<std::string>& opens, const std::vector<std::string>& ends,
                              std::uint32_t column);
@@ -230,6 +231,7 @@ bool Runner::run_block(SBlock& b) {
   bool supa = false, g53 = false, cip = false, ct = false;
   std::optional<std::string> frame_op;
   const Item* cycle_call = nullptr;
+  const Item* pattern_call = nullptr;
   bool mcall = false, program_return = false;
   std::string subprogram;
   std::optional<std::string> goto_label, goto_how;
@@ -257,6 +259,8 @@ bool Runner::run_block(SBlock& b) {
           if (!it.text.empty()) m_.message(it.text);
         } else if (table_.cycles.count(n)) {
           cycle_call = &it;
+        } else if (table_.patterns.count(n)) {
+          pattern_call = &it;
         } else if (std::find(table_.unsupported_cycles.begin(), table_.unsupported_cycles.end(), n) != table_.unsupported_cycles.end()) {
           m_.fail(it.column, n + " is recognised but not supported: ncbridge does not invent its motion "
                                  "(post the program with explicit moves, or use CYCLE81-CYCLE89)");
@@ -517,6 +521,7 @@ bool Runner::run_block(SBlock& b) {
   }
   if (m_.execute(nb)) return false;
 
+  if (pattern_call) hole_pattern(*pattern_call, b);
   if (cycle_call) cycle(*cycle_call, b, mcall);
   else if (mcall) modal_cycle_.reset();
   if (modal_cycle_ && !cycle_call && has_axes && !supa) run_cycle_here(col);
@@ -615,6 +620,50 @@ bool Runner::run_control(SBlock& b) {
     else structures_.pop_back();
   }
   return true;
+}
+
+// HOLES1 (a row) and HOLES2 (a circle): rapid to each hole at the current height, where the
+// modally called cycle (MCALL) drills; without one the pattern only positions, as on the control.
+void Runner::hole_pattern(const Item& call, const SBlock& b) {
+  const lowering::CycleEntry& entry = table_.patterns.at(call.name);
+  std::map<std::string, double> a;
+  if (call.arguments.size() > entry.positional.size()) {
+    m_.fail(call.column, call.name + " takes at most " + std::to_string(entry.positional.size()) + " parameters");
+  }
+  for (std::size_t i = 0; i < call.arguments.size(); ++i) {
+    if (call.arguments[i] != kNoExpr) a[entry.positional[i]] = eval(b, call.arguments[i]);
+  }
+  auto get = [&](const char* p) {
+    auto it = a.find(p);
+    if (it == a.end()) m_.fail(call.column, call.name + ": parameter " + std::string(p) + " missing");
+    return it->second;
+  };
+  const int count = static_cast<int>(std::lround(get("NUM")));
+  if (count < 1) m_.fail(call.column, call.name + ": NUM must be at least 1");
+  std::vector<std::pair<double, double>> holes;
+  if (entry.meta == "hole_row") {
+    const double x0 = get("SPCA"), y0 = get("SPCO"), angle = a.count("STA1") ? a["STA1"] * kDeg : 0.0;
+    const double first = get("FDIS"), spacing = get("DBH");
+    for (int k = 0; k < count; ++k) {
+      double d = first + k * spacing;
+      holes.emplace_back(x0 + d * std::cos(angle), y0 + d * std::sin(angle));
+    }
+  } else {
+    const double cx = get("CPA"), cy = get("CPO"), radius = get("RAD");
+    const double start = a.count("STA1") ? a["STA1"] : 0.0;
+    const double step = a.count("INDA") && a["INDA"] != 0 ? a["INDA"] : 360.0 / count;
+    for (int k = 0; k < count; ++k) {
+      double angle = (start + k * step) * kDeg;
+      holes.emplace_back(cx + radius * std::cos(angle), cy + radius * std::sin(angle));
+    }
+  }
+  for (const auto& [x, y] : holes) {
+    NeutralBlock nb;
+    nb.g(0, call.column);
+    m_.put_axes(nb, x, y, std::nullopt, call.column);
+    if (m_.execute(nb)) return;
+    if (modal_cycle_) run_cycle_here(call.column);
+  }
 }
 
 void Runner::cycle(const Item& call, const SBlock& b, bool modal_call) {
