@@ -22,6 +22,7 @@ ncbridge::interpreter::Options fuzz_options() {
   using ncbridge::setup::Tool;
   ncbridge::interpreter::Options options;
   options.dialect = ncbridge::interpreter::Dialect::Mach3;
+  options.max_loop_iterations = 20'000;  // endless loops end quickly under the sanitizers
   std::vector<Tool> tools;
   for (int number = 1; number <= 4; ++number) {
     Tool tool;

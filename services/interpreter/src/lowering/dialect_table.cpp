@@ -10,6 +10,7 @@
 namespace ncbridge::interpreter::lowering {
 
 std::string code_key(double code) {
+  if (!(std::fabs(code) < 1e6)) return "?";  // no table has such a code (and NaN is none)
   double tenths = std::nearbyint(code * 10.0);
   long whole = static_cast<long>(tenths) / 10;
   long fraction = static_cast<long>(tenths) % 10;

@@ -77,7 +77,6 @@ class Runner {
   std::uint64_t steps_ = 0;
   std::size_t last_index_ = 0;
   std::uint64_t backward_jumps_ = 0;
-  static constexpr std::uint64_t kMaxLoopIterations = 1'000'000;
 
   bool incremental_ = false;
   int motion_ = 0;  // 0, 1, 2, 3
@@ -145,8 +144,8 @@ bool Runner::step() {
   std::size_t index = pc_++;
   // every jump back to an earlier block is a loop iteration; a program that loops a million
   // times is taken as an endless loop (LinuxCNC's rs274 would run forever)
-  if (steps_ > 1 && index <= last_index_ && ++backward_jumps_ > kMaxLoopIterations) {
-    m_.fail(1, "Loop repeated more than " + std::to_string(kMaxLoopIterations) + " times (endless loop?)");
+  if (steps_ > 1 && index <= last_index_ && ++backward_jumps_ > options_.max_loop_iterations) {
+    m_.fail(1, "Loop repeated more than " + std::to_string(options_.max_loop_iterations) + " times (endless loop?)");
   }
   last_index_ = index;
   SBlock b;
