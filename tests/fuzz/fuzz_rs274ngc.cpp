@@ -31,6 +31,7 @@ ncbridge::interpreter::Options fuzz_options() {
     tools.push_back(tool);
   }
   options.tools = ncbridge::setup::ToolList(std::move(tools));
+  options.max_loop_iterations = 20000;  // an endless loop ends in an error well within -timeout
   return options;  // no subroutine path: fuzzed programs never read files
 }
 

@@ -245,6 +245,10 @@ bool ControlFlowRunner::run_statement() {
       for (ExprRef a : st.arguments) args.push_back(eval(a));
       if (args.size() > static_cast<std::size_t>(Parameters::kLocalCount)) fail(col, "Too many arguments in call");
       if (frames_.size() >= kMaxCallDepth) fail(col, "Too many nested subroutine calls");
+      if (++iterations_ >= options_.max_loop_iterations) {
+        fail(col, "Subroutine o" + label + " not called: the program's loops and calls ran " +
+                      std::to_string(iterations_) + " times, the iteration limit (endless recursion?)");
+      }
       frames_.push_back(Frame{current_file_, next_offset_, line_, loops_.size()});
       executor_.enter_call();
       params_.push_scope();
@@ -376,12 +380,13 @@ bool ControlFlowRunner::run_statement() {
   }
 }
 
-// Endless loops stop with an error at the loop's opening line.
+// Endless loops (and endless recursion that stays within the call depth) stop with an error
+// at the loop's opening line.
 void ControlFlowRunner::count_iteration(Loop& loop) {
-  if (++loop.iterations < options_.max_loop_iterations) return;
+  if (++iterations_ < options_.max_loop_iterations) return;
   throw InputError({files_[loop.file].name, loop.line, loop.column},
-                   "Loop o" + loop.label + " ran " + std::to_string(loop.iterations) +
-                       " times: stopped at the iteration limit (an endless loop?)");
+                   "Loop o" + loop.label + " stopped: the program's loops ran " + std::to_string(iterations_) +
+                       " times, the iteration limit (an endless loop?)");
 }
 
 void ControlFlowRunner::call(const std::string& label) {

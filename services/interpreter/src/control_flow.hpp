@@ -49,7 +49,6 @@ class ControlFlowRunner {
     std::uint32_t line;                  // its line number
     std::int64_t remaining;
     std::uint32_t column = 1;            // of its statement, for errors
-    std::uint64_t iterations = 0;
   };
   struct SubDefinition {
     std::uint32_t file;
@@ -93,6 +92,7 @@ class ControlFlowRunner {
   std::unordered_map<std::string, SubDefinition> subs_;
   std::filesystem::path main_directory_;
   std::uint32_t call_column_ = 1;
+  std::uint64_t iterations_ = 0;  // loop iterations and calls so far (Options::max_loop_iterations)
   bool percent_mode_ = false;
   bool seen_content_ = false;
 };

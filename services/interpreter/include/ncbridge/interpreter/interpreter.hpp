@@ -23,9 +23,10 @@ struct Options {
   // LinuxCNC reports a program that ends without M2/M30 or a closing `%` as an error, after
   // running it. Off: the end of the file ends the program quietly.
   bool require_program_end = true;
-  // A loop (while, do, repeat), a canned cycle's L repeats or its pecks may run at most this
-  // many times; past it interpretation stops with an error at the loop, instead of running
-  // for ever (LinuxCNC has no such bound).
+  // Loop iterations (while, do, repeat) and subroutine calls of the whole program, and a
+  // canned cycle's L repeats times its pecks, may number at most this; past it interpretation
+  // stops with an error at the loop or call, instead of running for ever (LinuxCNC has no
+  // such bound).
   std::uint64_t max_loop_iterations = 1'000'000;
   // Heidenhain conversational F words: mm/min (the control's unit) unless the user says the
   // program was posted in mm/s (FreeCAD's Heidenhain post). Never guessed from the values.
