@@ -247,6 +247,12 @@ TEST(Heidenhain, ErrorsAreLocated) {
   EXPECT_NE(e.message().find("CC"), std::string::npos);
   e = error_of("0 BEGIN PGM T MM\n1 L X+0 R0 FMAX\n2 CALL LBL 7\n3 END PGM T MM\n", Dialect::Heidenhain);
   EXPECT_EQ(e.where().line, 3u);
+  // found by fuzz_heidenhain: an F without its value in CYCL CALL POS
+  e = error_of("0 BEGIN PGM T MM\n1 CYCL DEF 200 DRILLING\n2 CYCL CALL POS X+1 Y+1 Z+2 F\n3 END PGM T MM\n",
+               Dialect::Heidenhain);
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_EQ(e.where().column, 29u);
+  EXPECT_NE(e.message().find("F has no value"), std::string::npos) << e.message();
   e = error_of("0 BEGIN PGM T MM\n1 FROB X+0\n2 END PGM T MM\n", Dialect::Heidenhain);
   EXPECT_EQ(e.where().line, 2u);
   EXPECT_EQ(e.where().column, 3u);

@@ -50,7 +50,14 @@ class Runner {
     int remaining;
   };
   bool step();
-  double eval(const HBlock& b, ExprRef ref) { return evaluate(b.exprs, ref, m_.parameters(), m_.file_name()); }
+  double eval(const HBlock& b, ExprRef ref) {
+    if (ref == kNoExpr) m_.fail(b.column, "A word of this block has no value");
+    return evaluate(b.exprs, ref, m_.parameters(), m_.file_name());
+  }
+  double eval(const HBlock& b, const HWord& w) {
+    if (w.value == kNoExpr) m_.fail(w.column, (w.name.empty() ? std::string("A word") : w.name) + " has no value");
+    return evaluate(b.exprs, w.value, m_.parameters(), m_.file_name());
+  }
   const HWord* find(const HBlock& b, std::string_view name) const {
     for (const HWord& w : b.words) if (w.name == name) return &w;
     return nullptr;
@@ -176,7 +183,7 @@ bool Runner::step() {
         const HWord* fmax = find(b, "FMAX");
         nb.g(fmax ? 0 : 1, b.column);
         if (!fmax) {
-          if (const HWord* f = find(b, "F")) feed_ = eval(b, f->value);
+          if (const HWord* f = find(b, "F")) feed_ = eval(b, *f);
           add_feed(nb, b.column);
         }
         std::optional<double> x, y, z;
@@ -215,7 +222,7 @@ bool Runner::step() {
         if (target >= index) m_.fail(b.column, "CALL LBL ... REP repeats a section: the LBL must come before it");
         auto it = section_repeats_.find(index);
         if (it == section_repeats_.end()) {
-          int repeats = static_cast<int>(std::lround(eval(b, rep->value)));
+          int repeats = static_cast<int>(std::lround(eval(b, *rep)));
           if (repeats < 0) m_.fail(rep->column, "REP must not be negative");
           it = section_repeats_.emplace(index, repeats).first;
         }
@@ -301,7 +308,7 @@ bool Runner::tool_call(const HBlock& b) {
   if (!b.tool_name.empty()) {
     tool = m_.tool_number_for_name(b.tool_name, b.column);
   } else if (const HWord* t = find(b, "T")) {
-    tool = static_cast<int>(std::lround(eval(b, t->value)));
+    tool = static_cast<int>(std::lround(eval(b, *t)));
   } else if (b.kind == Kind::ToolCall) {
     tool = m_.state().tool_in_spindle;  // TOOL CALL Z S..: new data for the tool in the spindle
   }
@@ -314,8 +321,8 @@ bool Runner::tool_call(const HBlock& b) {
   if (b.text == "Z" && m_.state().plane != canonical::Plane::XY) nb.g(17, b.column);
   double delta_length = 0;
   for (const HWord& w : b.words) {
-    if (w.name == "S") nb.add('s', eval(b, w.value), w.column);
-    else if (w.name == "F") feed_ = eval(b, w.value);
+    if (w.name == "S") nb.add('s', eval(b, w), w.column);
+    else if (w.name == "F") feed_ = eval(b, w);
     else if (w.name == "DL" && w.value != kNoExpr) delta_length = eval(b, w.value);
     else if (w.name == "DR" && w.value != kNoExpr && eval(b, w.value) != 0.0) {
       // a radius oversize acts through radius compensation (RL/RR) only

@@ -48,7 +48,10 @@ class Runner {
   std::size_t add_file(ProgramText text);
   bool step();
   bool run_block(SBlock& b);
-  double eval(const SBlock& b, ExprRef ref) { return evaluate(b.exprs, ref, m_.parameters(), m_.file_name()); }
+  double eval(const SBlock& b, ExprRef ref) {
+    if (ref == kNoExpr) m_.fail(1, "A word of this block has no value");
+    return evaluate(b.exprs, ref, m_.parameters(), m_.file_name());
+  }
   void jump(const std::string& label, const std::string& how, std::uint32_t column);
   void call_subprogram(const std::string& name, int repeats, std::uint32_t column);
   bool return_from_subprogram();
