@@ -158,7 +158,7 @@ struct Cc1Builder::State {
   void rapid_to(const canonical::Call& c, const stepnc::CartesianPoint& p) {
     max_rapid_z = std::max(max_rapid_z.value_or(p.z), p.z);
     if (!rapid) {
-      rapid.emplace();
+      rapid = PendingRapid{};  // not emplace(): clang 14 rejects it for a nested struct with member initialisers
       if (m.position) {
         rapid->path.points.push_back(*m.position);
         rapid->max_z = m.position->z;
@@ -266,7 +266,7 @@ struct Cc1Builder::State {
     } else {
       close_cut();
       flush_rapid();
-      cut.emplace();
+      cut = OpenCut{};
       cut->tool_number = m.tool;
       cut->tool = loaded_tool(c.source, nullptr);
       cut->technology_value = technology;
@@ -320,7 +320,7 @@ struct Cc1Builder::State {
     if (!hole) {
       close_cut();
       flush_rapid();
-      hole.emplace();
+      hole = HoleCycle{};
       hole_cycle_id = tag.cycle_id;
       const canonical::Plane plane = tag.plane == 1 ? canonical::Plane::YZ
                                      : tag.plane == 2 ? canonical::Plane::XZ : canonical::Plane::XY;
