@@ -1,6 +1,8 @@
 // `ncbridge convert PROGRAM --tools T --stock S -o OUT.stp [--report R.json]`: the embedded
 // pipeline interpreter -> cc1_builder -> step_writer in one process. The output is written
-// atomically: a failed run leaves no file (and an old OUT.stp untouched).
+// atomically: a failed run leaves no file (and an old OUT.stp untouched). CC1 from a program is
+// streamed: each workplan element is written (file and report) as soon as the builder finishes
+// it, so memory stays flat; CC2 needs the whole CC1 model first.
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
@@ -15,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "cc1_report.hpp"
 #include "cc2_output.hpp"
 #include "commands.hpp"
 #include "html_report.hpp"
@@ -27,6 +30,7 @@
 #include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/step_writer/part21_writer.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
+#include "ncbridge/step_writer/stepnc_stream_writer.hpp"
 
 namespace ncbridge::cli {
 
@@ -93,6 +97,25 @@ class TimedSink final : public canonical::Sink {
   bool progress_;
   bool shown_ = false;
   std::uint64_t calls_ = 0;
+  Clock::duration spent_{};
+};
+
+// Streamed CC1: each finished workplan element goes to the Part 21 writer and the report, timed
+// (the builder's clock runs around it too).
+class ElementWriter final : public cc1_builder::WorkplanSink {
+ public:
+  ElementWriter(step_writer::StepncStreamWriter& writer, Cc1Report* report) : writer_(writer), report_(report) {}
+  void element(const stepnc::Project& project, const stepnc::Executable& element) override {
+    const auto start = Clock::now();
+    writer_.element(project, element);
+    if (report_) report_->element(project, element);
+    spent_ += Clock::now() - start;
+  }
+  Clock::duration spent() const { return spent_; }
+
+ private:
+  step_writer::StepncStreamWriter& writer_;
+  Cc1Report* report_;
   Clock::duration spent_{};
 };
 
@@ -166,6 +189,90 @@ bool is_part21_file(const std::string& path) {
   return head.compare(i, 13, "ISO-10303-21;") == 0;
 }
 
+cc1_builder::Options builder_options(const ConvertArguments& args, const std::optional<setup::Stock>& stock) {
+  cc1_builder::Options options;
+  options.tools = setup::read_tool_list(args.tools);
+  options.stock = *stock;
+  options.security_plane_z = args.security_plane;
+  return options;
+}
+
+interpreter::Options interpreter_options(const ConvertArguments& args, const setup::ToolList& tools) {
+  interpreter::Options interp;
+  interp.dialect = dialect_of(args.dialect);
+  if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
+    const auto detected = interpreter::detect_dialect_file(args.program);
+    interp.dialect = detected.dialect;
+    std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
+                 std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
+  }
+  if (args.heidenhain_feed_units == "mm/s") interp.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
+  interp.tools = tools;
+  std::stringstream dirs(args.subroutine_path);
+  for (std::string d; std::getline(dirs, d, ':');) {
+    if (!d.empty()) interp.subroutine_path.emplace_back(d);
+  }
+  return interp;
+}
+
+void interpret(const ConvertArguments& args, const interpreter::Options& interp, TimedSink& sink) {
+  try {
+    interpreter::interpret_file(args.program, interp, sink);
+  } catch (...) {
+    sink.clear();
+    throw;
+  }
+}
+
+void print_warnings(const std::vector<cc1_builder::Warning>& warnings) {
+  for (const auto& w : warnings) std::fprintf(stderr, "%s: warning: %s\n", w.where.to_string().c_str(), w.message.c_str());
+}
+
+// CC1 from a program, streamed: interpreter -> cc1_builder -> (Part 21 writer, report) element
+// by element; the model is never whole in memory.
+int run_streamed_cc1(const ConvertArguments& args, Clock::time_point t0) {
+  const std::optional<setup::Stock> stock = setup::read_stock(args.stock);
+  const cc1_builder::Options options = builder_options(args, stock);
+  const interpreter::Options interp = interpreter_options(args, options.tools);
+
+  step_writer::StepncWriteOptions write;
+  write.file_name = std::filesystem::path(args.output).filename().string();
+  step_writer::AtomicFile file(args.output);
+  step_writer::StepncStreamWriter writer(write, [&](std::string_view chunk) { file.write(chunk); });
+  std::optional<Cc1Report> report;
+  if (!args.report.empty()) report.emplace(args.report, Cc1Report::Head{args.program, args.output, args.level});
+  ElementWriter elements(writer, report ? &*report : nullptr);
+  cc1_builder::Cc1Builder builder(options, &elements);
+  TimedSink sink(builder, isatty(STDERR_FILENO) != 0);
+  const auto t_interpret = Clock::now();
+  interpret(args, interp, sink);
+  const auto t_built = Clock::now();
+  const stepnc::Project project = builder.take_project();
+  const std::uint64_t bytes = writer.finish(project);
+  const auto t_written = Clock::now();
+  file.commit();
+  const auto t_done = Clock::now();
+
+  print_warnings(builder.warnings());
+  if (report) {
+    // The writer's and the report's work happens inside the builder's calls; each is counted
+    // once, under step_writer.
+    const double written_ms = ms(elements.spent()) + ms(t_written - t_built);
+    Cc1Report::Tail tail;
+    tail.canonical_calls = builder.calls_seen();
+    tail.output_bytes = bytes;
+    for (const auto& w : builder.warnings()) tail.warnings.emplace_back(w.where.to_string(), w.message);
+    tail.timings_ms = {{"read_inputs", ms(t_interpret - t0)},
+                       {"interpreter", ms(t_built - t_interpret) - ms(sink.spent())},
+                       {"cc1_builder", ms(sink.spent()) - ms(elements.spent())},
+                       {"step_writer", written_ms},
+                       {"output", ms(t_done - t_written)},
+                       {"total", ms(t_done - t0)}};
+    report->commit(project, tail);
+  }
+  return 0;
+}
+
 int run_convert(const ConvertArguments& args) {
   const auto t0 = Clock::now();
   if (!args.html.empty() && args.level != "cc2") {
@@ -175,6 +282,7 @@ int run_convert(const ConvertArguments& args) {
   if (!part21_input && (args.tools.empty() || args.stock.empty())) {
     throw InputError({args.program, 0, 0}, "converting a program needs --tools and --stock");
   }
+  if (!part21_input && args.level == "cc1") return run_streamed_cc1(args, t0);
   std::vector<cc1_builder::Warning> warnings;
   std::uint64_t calls = 0;
   stepnc::Project project;
@@ -189,34 +297,12 @@ int run_convert(const ConvertArguments& args) {
     project = std::move(read.project);
     t_built = Clock::now();
   } else {
-    cc1_builder::Options options;
-    options.tools = setup::read_tool_list(args.tools);
-    options.stock = *stock;
-    options.security_plane_z = args.security_plane;
-    interpreter::Options interp;
-    interp.dialect = dialect_of(args.dialect);
-    if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
-      const auto detected = interpreter::detect_dialect_file(args.program);
-      interp.dialect = detected.dialect;
-      std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
-                   std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
-    }
-    if (args.heidenhain_feed_units == "mm/s") interp.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
-    interp.tools = options.tools;
-    std::stringstream dirs(args.subroutine_path);
-    for (std::string d; std::getline(dirs, d, ':');) {
-      if (!d.empty()) interp.subroutine_path.emplace_back(d);
-    }
-
+    const cc1_builder::Options options = builder_options(args, stock);
+    const interpreter::Options interp = interpreter_options(args, options.tools);
     cc1_builder::Cc1Builder builder(options);
     TimedSink sink(builder, isatty(STDERR_FILENO) != 0);
     t_interpret = Clock::now();
-    try {
-      interpreter::interpret_file(args.program, interp, sink);
-    } catch (...) {
-      sink.clear();
-      throw;
-    }
+    interpret(args, interp, sink);
     t_built = Clock::now();
     warnings = builder.warnings();
     calls = builder.calls_seen();
@@ -246,7 +332,7 @@ int run_convert(const ConvertArguments& args) {
       warnings.push_back(std::move(warning));
     }
   }
-  for (const auto& w : warnings) std::fprintf(stderr, "%s: warning: %s\n", w.where.to_string().c_str(), w.message.c_str());
+  print_warnings(warnings);
   if (!args.report.empty()) {
     const double builder_ms = ms(builder_spent);
     nlohmann::ordered_json timings{{"read_inputs", ms(t_interpret - t0)},

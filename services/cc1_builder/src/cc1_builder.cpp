@@ -60,7 +60,21 @@ RefT intern(std::vector<T>& table, const T& value) {
 }  // namespace
 
 struct Cc1Builder::State {
-  explicit State(Options o) : options(std::move(o)) {}
+  State(Options o, WorkplanSink* sink) : options(std::move(o)), elements(sink) {
+    project.its_id = options.project_id;
+    project.workpiece.its_id = "PART";
+    if (options.stock) {
+      stepnc::Workpiece raw;
+      raw.its_id = "RAWPIECE";
+      stepnc::Block block;
+      block.position.location = {options.stock->min[0], options.stock->min[1], options.stock->min[2]};
+      block.x = options.stock->size(0);
+      block.y = options.stock->size(1);
+      block.z = options.stock->size(2);
+      raw.its_bounding_geometry = block;
+      project.rawpiece = raw;
+    }
+  }
 
   struct OpenCut {
     int tool_number = 0;
@@ -81,6 +95,7 @@ struct Cc1Builder::State {
   };
 
   Options options;
+  WorkplanSink* elements;  // streamed: finished elements go there, not into the project
   MachineState m;
   stepnc::Project project;
   std::vector<stepnc::Feature>& features = project.features;
@@ -154,6 +169,17 @@ struct Cc1Builder::State {
     max_motion_z = std::max(max_motion_z.value_or(p.z), p.z);
   }
 
+  // A finished element: kept in the project, or handed on with its feature and operation.
+  void finished(stepnc::Executable e) {
+    if (!elements) {
+      executables.push_back(std::move(e));
+      return;
+    }
+    elements->element(project, e);
+    features.clear();
+    operations.clear();
+  }
+
   // ---- rapid runs
   void rapid_to(const canonical::Call& c, const stepnc::CartesianPoint& p) {
     max_rapid_z = std::max(max_rapid_z.value_or(p.z), p.z);
@@ -183,7 +209,7 @@ struct Cc1Builder::State {
       t.basiccurve.segments.emplace_back(std::move(rapid->path));
       r.its_toolpath = stepnc::ToolpathList{{std::move(t)}};
       r.source = rapid->source;
-      executables.emplace_back(std::move(r));
+      finished(std::move(r));
     }
     rapid.reset();
   }
@@ -221,7 +247,7 @@ struct Cc1Builder::State {
     ws.its_feature = stepnc::FeatureRef{static_cast<std::uint32_t>(features.size() - 1)};
     ws.its_operation = stepnc::OperationRef{static_cast<std::uint32_t>(operations.size() - 1)};
     ws.source = cut->source;
-    executables.emplace_back(std::move(ws));
+    finished(std::move(ws));
     cut.reset();
   }
 
@@ -365,7 +391,7 @@ struct Cc1Builder::State {
     ws.its_feature = stepnc::FeatureRef{static_cast<std::uint32_t>(features.size() - 1)};
     ws.its_operation = stepnc::OperationRef{static_cast<std::uint32_t>(operations.size() - 1)};
     ws.source = hole->source;
-    executables.emplace_back(std::move(ws));
+    finished(std::move(ws));
     hole.reset();
   }
 
@@ -450,29 +476,17 @@ struct Cc1Builder::State {
     stepnc::Plane secplane;
     secplane.position.location.z = secplane_z;
     for (auto& e : executables) std::visit([&](auto& x) { x.its_secplane = secplane; }, e);
-    project.its_id = options.project_id;
     project.setup.its_secplane = secplane;
     if (m.setup_origin) {
       stepnc::Axis2Placement3d origin;
       origin.location = {(*m.setup_origin)[0], (*m.setup_origin)[1], (*m.setup_origin)[2]};
       project.setup.its_origin = origin;
     }
-    project.workpiece.its_id = "PART";
-    if (options.stock) {
-      stepnc::Workpiece raw;
-      raw.its_id = "RAWPIECE";
-      stepnc::Block block;
-      block.position.location = {options.stock->min[0], options.stock->min[1], options.stock->min[2]};
-      block.x = options.stock->size(0);
-      block.y = options.stock->size(1);
-      block.z = options.stock->size(2);
-      raw.its_bounding_geometry = block;
-      project.rawpiece = raw;
-    }
   }
 };
 
-Cc1Builder::Cc1Builder(Options options) : state_(std::make_unique<State>(std::move(options))) {}
+Cc1Builder::Cc1Builder(Options options, WorkplanSink* elements)
+    : state_(std::make_unique<State>(std::move(options), elements)) {}
 Cc1Builder::~Cc1Builder() = default;
 
 void Cc1Builder::source_file(std::uint32_t index, std::string_view path) {

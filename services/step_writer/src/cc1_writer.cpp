@@ -2,7 +2,11 @@
 // -111 drafts (reference/iso14649/combined_schema_iso14649_only.exp): inherited attributes first,
 // `$` only for OPTIONAL attributes, `()` for empty required aggregates.
 // Ids are given bottom-up: everything an instance refers to is written before it, PROJECT last,
-// so the text streams out as it is made (part21_instance_stream.hpp). Shared: each resource
+// so the text streams out as it is made (part21_instance_stream.hpp). One exception: the
+// setup's security plane, which every executable names but whose height is known only at the
+// end of a streamed program, has an id reserved after the workpiece and is written with the
+// SETUP. The workplan is written element by element (StepncStreamWriter), the same way whether
+// the elements come from a whole project or one by one from a builder. Shared: each resource
 // (tool, technology, machine functions), named placements and planes of equal value, and value
 // instances (points, directions, arc placements, circles) repeated while still remembered
 // (recent_instances.hpp), such as the point where one toolpath segment ends and the next begins.
@@ -19,6 +23,7 @@
 #include "ncbridge/step_writer/part21_reader.hpp"
 #include "ncbridge/step_writer/part21_writer.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
+#include "ncbridge/step_writer/stepnc_stream_writer.hpp"
 #include "cc2_writer.hpp"
 #include "part21_instance_stream.hpp"
 #include "recent_instances.hpp"
@@ -79,36 +84,42 @@ PlacementKey key_of(std::string_view name, const sn::Axis2Placement3d& a) {
           name};
 }
 
+// Writes a project in three steps: begin() (the workpieces), element() for each executable of
+// the workplan in order, finish() (setup, workplan, project). Whole: `p` holds every element,
+// features and operations are written once however many workingsteps name them. Streamed: each
+// element comes with a project holding the resources so far and the element's own feature and
+// operation (a builder's), and only the ids of the executables are kept.
 class Cc1Writer {
  public:
-  Cc1Writer(const sn::Project& p, InstanceStream& out)
-      : p_(p),
-        s_(out),
-        tools_(p.tools.size()),
-        technologies_(p.technologies.size()),
-        functions_(p.machine_functions.size()),
-        operations_(p.operations.size()),
-        features_(p.features.size()) {}
+  enum class Mode { Whole, Streamed };
 
-  void build() {
-    index_feature_operations();
-    const InstanceId rawpiece = p_.rawpiece ? write_workpiece(*p_.rawpiece, 0) : 0;
-    workpiece_ = write_workpiece(p_.workpiece, rawpiece);
+  Cc1Writer(InstanceStream& out, Mode mode) : s_(out), streamed_(mode == Mode::Streamed) {}
+
+  void begin(const sn::Project& p) {
+    p_ = &p;
+    if (!streamed_) index_feature_operations();
+    const InstanceId rawpiece = p_->rawpiece ? write_workpiece(*p_->rawpiece, 0) : 0;
+    workpiece_ = write_workpiece(p_->workpiece, rawpiece);
+    security_plane_ = s_.reserve();
+  }
+
+  void element(const sn::Project& p, const sn::Executable& e) {
+    p_ = &p;
+    executables_.push_back(std::visit([&](const auto& x) { return write_executable(x); }, e));
+  }
+
+  void finish(const sn::Project& p) {
+    p_ = &p;
     const InstanceId setup = write_setup();
-    std::vector<InstanceId> executables;
-    executables.reserve(p_.main_workplan.its_elements.size());
-    for (const auto& e : p_.main_workplan.its_elements) {
-      executables.push_back(std::visit([&](const auto& x) { return write_executable(x); }, e));
-    }
     s_.begin("WORKPLAN");
-    s_.string(p_.main_workplan.its_id);
-    s_.refs(executables);
+    s_.string(p_->main_workplan.its_id);
+    s_.refs(executables_);
     s_.unset();
     s_.ref(setup);
     s_.unset();
     const InstanceId workplan = s_.end();
     s_.begin("PROJECT");
-    s_.string(p_.its_id);
+    s_.string(p_->its_id);
     s_.ref(workplan);
     s_.refs(std::array{workpiece_});
     s_.unset();
@@ -118,17 +129,23 @@ class Cc1Writer {
   }
 
  private:
+  // The written id of a table entry (0: not written yet); tables of a streamed project grow.
+  static InstanceId& written(std::vector<InstanceId>& ids, std::uint32_t index) {
+    if (index >= ids.size()) ids.resize(index + 1, 0);
+    return ids[index];
+  }
+
   // Which operations each feature carries (its_operations), in workplan order, as one flat
   // table: feature f's operations are feature_ops_[feature_first_[f] .. feature_first_[f + 1]).
   void index_feature_operations() {
-    feature_first_.assign(p_.features.size() + 1, 0);
-    for (const auto& e : p_.main_workplan.its_elements) {
+    feature_first_.assign(p_->features.size() + 1, 0);
+    for (const auto& e : p_->main_workplan.its_elements) {
       if (const auto* ws = std::get_if<sn::MachiningWorkingstep>(&e)) ++feature_first_.at(ws->its_feature.index + 1);
     }
     for (std::size_t f = 1; f < feature_first_.size(); ++f) feature_first_[f] += feature_first_[f - 1];
     feature_ops_.resize(feature_first_.back());
     std::vector<std::uint32_t> filled(feature_first_.begin(), feature_first_.end() - 1);
-    for (const auto& e : p_.main_workplan.its_elements) {
+    for (const auto& e : p_->main_workplan.its_elements) {
       if (const auto* ws = std::get_if<sn::MachiningWorkingstep>(&e)) feature_ops_[filled[ws->its_feature.index]++] = ws->its_operation;
     }
   }
@@ -274,9 +291,9 @@ class Cc1Writer {
 
   // ---- resources
   InstanceId tool(sn::ToolRef r) {
-    InstanceId& written = tools_.at(r.index);
-    if (written != 0) return written;
-    const sn::MillingCuttingTool& t = p_.tool(r);
+    InstanceId& id = written(tools_, r.index);
+    if (id != 0) return id;
+    const sn::MillingCuttingTool& t = p_->tool(r);
     const auto& d = t.dimension;
     s_.begin("MILLING_TOOL_DIMENSION");
     s_.real(d.diameter);
@@ -318,12 +335,12 @@ class Cc1Writer {
     s_.opt_real(t.overall_assembly_length);
     s_.unset();
     s_.unset();
-    return written = s_.end();
+    return id = s_.end();
   }
   InstanceId technology(sn::TechnologyRef r) {
-    InstanceId& written = technologies_.at(r.index);
-    if (written != 0) return written;
-    const sn::MillingTechnology& t = p_.technology(r);
+    InstanceId& id = written(technologies_, r.index);
+    if (id != 0) return id;
+    const sn::MillingTechnology& t = p_->technology(r);
     s_.begin("MILLING_TECHNOLOGY");
     s_.opt_real(t.feedrate);
     s_.enumeration(t.feedrate_reference == sn::ToolReferencePoint::Tcp ? "TCP" : "CCP");
@@ -334,12 +351,12 @@ class Cc1Writer {
     s_.boolean(t.inhibit_feedrate_override);
     s_.boolean(t.inhibit_spindle_override);
     s_.unset();
-    return written = s_.end();
+    return id = s_.end();
   }
   InstanceId functions(sn::MachineFunctionsRef r) {
-    InstanceId& written = functions_.at(r.index);
-    if (written != 0) return written;
-    const sn::MillingMachineFunctions& f = p_.functions(r);
+    InstanceId& id = written(functions_, r.index);
+    if (id != 0) return id;
+    const sn::MillingMachineFunctions& f = p_->functions(r);
     s_.begin("MILLING_MACHINE_FUNCTIONS");
     s_.boolean(f.coolant);
     s_.opt_real(f.coolant_pressure);
@@ -353,7 +370,7 @@ class Cc1Writer {
     s_.unset();
     s_.open_list();
     s_.close_list();
-    return written = s_.end();
+    return id = s_.end();
   }
 
   // ---- toolpaths
@@ -471,16 +488,18 @@ class Cc1Writer {
   }
 
   InstanceId operation(sn::OperationRef r) {
-    InstanceId& written = operations_.at(r.index);
-    if (written != 0) return written;
-    const sn::Operation& op = p_.operation(r);
+    InstanceId& id = written(operations_, r.index);
+    if (id == 0) id = operation_instance(p_->operation(r));
+    return id;
+  }
+  InstanceId operation_instance(const sn::Operation& op) {
     const sn::MachiningOperation& m = sn::machining_operation(op);
     const InstanceId toolpath = m.its_toolpath ? toolpath_list(*m.its_toolpath) : 0;
     const InstanceId start = m.start_point ? point(*m.start_point) : 0;
     const InstanceId tool_id = tool(m.its_tool);
     const InstanceId technology_id = technology(m.its_technology);
     const InstanceId functions_id = functions(m.its_machine_functions);
-    written = std::visit(
+    return std::visit(
         [&](const auto& o) {
           using O = std::decay_t<decltype(o)>;
           // Instances the subtype's own attributes refer to come first.
@@ -530,7 +549,6 @@ class Cc1Writer {
           return s_.end();
         },
         op);
-    return written;
   }
 
   // ---- features
@@ -558,12 +576,14 @@ class Cc1Writer {
   }
 
   InstanceId feature(sn::FeatureRef r) {
-    InstanceId& written = features_.at(r.index);
-    if (written != 0) return written;
-    const sn::Feature& f = p_.feature(r);
+    InstanceId& id = written(features_, r.index);
+    if (id != 0) return id;
     std::vector<InstanceId>& ops = feature_operation_ids_;
     ops.clear();
     for (std::uint32_t k = feature_first_[r.index]; k < feature_first_[r.index + 1]; ++k) ops.push_back(operation(feature_ops_[k]));
+    return id = feature_instance(p_->feature(r), ops);
+  }
+  InstanceId feature_instance(const sn::Feature& f, const std::vector<InstanceId>& ops) {
     if (cc2::is_cc2_feature(f)) {  // cc2_writer.cpp, sharing this writer's geometry
       struct Geometry final : cc2::SharedGeometry {
         explicit Geometry(Cc1Writer& writer) : w(writer) {}
@@ -574,7 +594,7 @@ class Cc1Writer {
         InstanceId toleranced(const sn::TolerancedLengthMeasure& t) override { return w.toleranced(t); }
         Cc1Writer& w;
       } geometry(*this);
-      return written = cc2::write_feature(s_, geometry, f, workpiece_, ops);
+      return cc2::write_feature(s_, geometry, f, workpiece_, ops);
     }
     // MACHINING_FEATURE's attributes; CC2 features are written by their own mapping (issue 4): a
     // CC1 file carries them as toolpath features so it stays valid.
@@ -612,14 +632,26 @@ class Cc1Writer {
           write_common("TOOLPATH_FEATURE", common(m.its_id, m.feature_placement, m.depth));
         }},
         f);
-    return written = s_.end();
+    return s_.end();
   }
 
   // ---- workplan
+  // The setup's security plane (reserved, written by write_setup) or another one.
+  InstanceId security_plane(const sn::Plane& pl) {
+    return streamed_ || pl == p_->setup.its_secplane ? security_plane_ : plane(pl, "SECURITY PLANE");
+  }
+
   InstanceId write_executable(const sn::MachiningWorkingstep& ws) {
-    const InstanceId secplane = plane(ws.its_secplane, "SECURITY PLANE");
-    const InstanceId feature_id = feature(ws.its_feature);
-    const InstanceId operation_id = operation(ws.its_operation);
+    const InstanceId secplane = security_plane(ws.its_secplane);
+    InstanceId feature_id = 0, operation_id = 0;
+    if (streamed_) {  // its own feature and operation, in the order a whole project writes them
+      operation_id = operation_instance(p_->operation(ws.its_operation));
+      feature_operation_ids_.assign(1, operation_id);
+      feature_id = feature_instance(p_->feature(ws.its_feature), feature_operation_ids_);
+    } else {
+      feature_id = feature(ws.its_feature);
+      operation_id = operation(ws.its_operation);
+    }
     s_.begin("MACHINING_WORKINGSTEP");
     s_.string(ws.its_id);
     s_.ref(secplane);
@@ -629,7 +661,7 @@ class Cc1Writer {
     return s_.end();
   }
   InstanceId write_executable(const sn::RapidMovement& r) {
-    const InstanceId secplane = plane(r.its_secplane, "SECURITY PLANE");
+    const InstanceId secplane = security_plane(r.its_secplane);
     const InstanceId toolpath = r.its_toolpath ? toolpath_list(*r.its_toolpath) : 0;
     s_.begin("RAPID_MOVEMENT");
     s_.string(r.its_id);
@@ -666,10 +698,14 @@ class Cc1Writer {
   }
 
   InstanceId write_setup() {
-    const sn::Setup& s = p_.setup;
+    const sn::Setup& s = p_->setup;
     const InstanceId origin = s.its_origin ? placement(*s.its_origin, s.its_id) : 0;
-    const InstanceId secplane = plane(s.its_secplane, "SECURITY PLANE");
-    const InstanceId wp_origin = placement(s.its_workpiece_setup.its_origin, p_.workpiece.its_id);
+    const InstanceId secplane_position = placement(s.its_secplane.position, "SECURITY PLANE");
+    s_.begin(security_plane_, "PLANE");
+    s_.string("SECURITY PLANE");
+    s_.ref(secplane_position);
+    const InstanceId secplane = s_.end();
+    const InstanceId wp_origin = placement(s.its_workpiece_setup.its_origin, p_->workpiece.its_id);
     s_.begin("WORKPIECE_SETUP");
     s_.ref(workpiece_);
     s_.ref(wp_origin);
@@ -686,9 +722,11 @@ class Cc1Writer {
     return s_.end();
   }
 
-  const sn::Project& p_;
+  const sn::Project* p_ = nullptr;
   InstanceStream& s_;
-  InstanceId workpiece_ = 0;
+  bool streamed_;
+  InstanceId workpiece_ = 0, security_plane_ = 0;
+  std::vector<InstanceId> executables_;
   std::vector<std::uint32_t> feature_first_;
   std::vector<sn::OperationRef> feature_ops_;
   std::vector<InstanceId> tools_, technologies_, functions_, operations_, features_;  // 0: not written yet
@@ -719,9 +757,48 @@ std::uint64_t write_stepnc(const stepnc::Project& project, const StepncWriteOpti
                            const std::function<void(std::string_view)>& write_chunk) {
   InstanceStream stream(write_chunk);
   stream.raw(header_text(options));
-  Cc1Writer(project, stream).build();
+  Cc1Writer writer(stream, Cc1Writer::Mode::Whole);
+  writer.begin(project);
+  for (const auto& e : project.main_workplan.its_elements) writer.element(project, e);
+  writer.finish(project);
   stream.raw("ENDSEC;\nEND-ISO-10303-21;\n");
   return stream.finish();
+}
+
+struct StepncStreamWriter::Impl {
+  Impl(const StepncWriteOptions& options, std::function<void(std::string_view)> write_chunk)
+      : sink(std::move(write_chunk)), stream(sink), writer(stream, Cc1Writer::Mode::Streamed) {
+    stream.raw(header_text(options));
+  }
+  void begin_once(const stepnc::Project& project) {
+    if (begun) return;
+    begun = true;
+    writer.begin(project);
+  }
+  std::function<void(std::string_view)> sink;
+  InstanceStream stream;
+  Cc1Writer writer;
+  bool begun = false;
+  bool finished = false;
+};
+
+StepncStreamWriter::StepncStreamWriter(const StepncWriteOptions& options, std::function<void(std::string_view)> write_chunk)
+    : impl_(std::make_unique<Impl>(options, std::move(write_chunk))) {}
+StepncStreamWriter::~StepncStreamWriter() = default;
+
+void StepncStreamWriter::element(const stepnc::Project& project, const stepnc::Executable& element) {
+  if (impl_->finished) throw std::logic_error("StepncStreamWriter: element() after finish()");
+  impl_->begin_once(project);
+  impl_->writer.element(project, element);
+}
+
+std::uint64_t StepncStreamWriter::finish(const stepnc::Project& project) {
+  if (impl_->finished) throw std::logic_error("StepncStreamWriter: finish() called twice");
+  impl_->finished = true;
+  impl_->begin_once(project);
+  impl_->writer.finish(project);
+  impl_->stream.raw("ENDSEC;\nEND-ISO-10303-21;\n");
+  return impl_->stream.finish();
 }
 
 std::string write_stepnc(const stepnc::Project& project, const StepncWriteOptions& options) {

@@ -1,5 +1,6 @@
 #pragma once
-// Writes Part 21 instances as text, straight from attribute values, with consecutive ids from 1,
+// Writes Part 21 instances as text, straight from attribute values, with consecutive ids from 1
+// (an id may be reserved for an instance written later),
 // and hands the text on in chunks of about a megabyte: a file of any size is written without
 // holding it, or an instance graph, in memory. Attributes are separated and lines wrapped (after a
 // comma, past kLineWidth) as the generic writer does.
@@ -31,22 +32,15 @@ class InstanceStream {
   // Text outside the DATA section (header, ENDSEC), written as is.
   void raw(std::string_view text) { put(text); }
 
-  InstanceId begin(std::string_view entity) {
-    line_start_ = len_;
-    char* p = room(kMaxIdChars + entity.size() + 3);
-    *p++ = '#';
-    p = std::to_chars(p, p + kMaxIdChars, next_).ptr;
-    *p++ = '=';
-    p = copy(entity, p);
-    *p++ = '(';
-    len_ = static_cast<std::size_t>(p - buf_.get());
-    first_ = true;
-    return next_;
-  }
+  InstanceId begin(std::string_view entity) { return begin_instance(next_++, entity); }
+  // An id taken now for an instance written later (with begin(reserved, entity)), so that
+  // instances written before it can refer to it.
+  InstanceId reserve() { return next_++; }
+  InstanceId begin(InstanceId reserved, std::string_view entity) { return begin_instance(reserved, entity); }
   InstanceId end() {
     put(");\n");
     if (len_ >= kChunk) flush();
-    return next_++;
+    return current_;
   }
 
   void real(double v) {
@@ -122,6 +116,20 @@ class InstanceStream {
   static constexpr std::size_t kMaxIdChars = 24;
   static constexpr std::size_t kSeparatorChars = 4;  // ",\n  "
 
+  InstanceId begin_instance(InstanceId id, std::string_view entity) {
+    current_ = id;
+    line_start_ = len_;
+    char* p = room(kMaxIdChars + entity.size() + 3);
+    *p++ = '#';
+    p = std::to_chars(p, p + kMaxIdChars, id).ptr;
+    *p++ = '=';
+    p = copy(entity, p);
+    *p++ = '(';
+    len_ = static_cast<std::size_t>(p - buf_.get());
+    first_ = true;
+    return id;
+  }
+
   // At least n free bytes at the end of the buffer.
   char* room(std::size_t n) {
     if (capacity_ - len_ < n) grow(n);
@@ -178,6 +186,7 @@ class InstanceStream {
   std::size_t line_start_ = 0;
   bool first_ = true;
   InstanceId next_ = 1;
+  InstanceId current_ = 0;
   std::uint64_t written_ = 0;
   std::string scratch_;
 };

@@ -3,7 +3,8 @@
 // explicit toolpaths, rapid movements, drilling-family operations on round holes).
 // The segmentation rules are in docs/cc1.md. The builder is a canonical::Sink: feed it the
 // interpreter's stream, then take_project() after end(). Its working state is constant in
-// program length; the project it builds holds the toolpaths.
+// program length; the project it builds holds the toolpaths, unless a WorkplanSink takes each
+// workplan element as soon as it is finished (streamed CC1: then memory stays flat).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -33,9 +34,22 @@ struct Warning {
   std::string message;
 };
 
+// Receives the workplan element by element, in order, as each is finished.
+class WorkplanSink {
+ public:
+  virtual ~WorkplanSink() = default;
+  // `project` holds the tools, technologies and machine functions made so far, the workpiece and
+  // rawpiece, and for a machining workingstep its own feature and operation at the indices it
+  // names; both are valid during the call only. The element's its_secplane is not set: the
+  // security plane is the setup's, known after end().
+  virtual void element(const stepnc::Project& project, const stepnc::Executable& element) = 0;
+};
+
 class Cc1Builder final : public canonical::Sink {
  public:
-  explicit Cc1Builder(Options options);
+  // With `elements`, finished elements go there and the project keeps none (no workplan
+  // elements, features or operations): take_project() gives the resources, workpiece and setup.
+  explicit Cc1Builder(Options options, WorkplanSink* elements = nullptr);
   ~Cc1Builder() override;
   Cc1Builder(const Cc1Builder&) = delete;
   Cc1Builder& operator=(const Cc1Builder&) = delete;

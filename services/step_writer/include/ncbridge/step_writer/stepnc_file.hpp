@@ -2,8 +2,10 @@
 // The ISO 14649 model (ncbridge::stepnc::Project) <-> Part 21 files (ISO 10303-21), with the
 // entity names and attribute orders of the ISO 14649-10/-11/-111 EXPRESS schemas (2002 drafts).
 // Writing is deterministic: the same project and options give the same bytes. Ids are numbered
-// bottom-up (every reference points back; PROJECT is the last instance), so the file is written
-// as a stream without holding an instance graph. Reading a file this writer wrote gives back an
+// bottom-up (every reference points back, but to the setup's security plane, whose id is taken
+// after the workpiece and which is written with the SETUP; PROJECT is the last instance), so the
+// file is written as a stream without holding an instance graph (also while the workplan is
+// being built: stepnc_stream_writer.hpp). Reading a file this writer wrote gives back an
 // equal project (apart from SourceLines, which files do not carry), so write -> read -> write is
 // byte-identical. stepnc_to_graph gives the same instances and ids as a Graph (for the schema
 // check); writing that Graph with write_part21 differs only in line breaks.
