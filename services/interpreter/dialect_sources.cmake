@@ -35,8 +35,10 @@ list(APPEND NCBRIDGE_INTERPRETER_SOURCES
   src/lowering/program_text.cpp
   src/lowering/run_dialect.cpp
   src/fanuc/fanuc_front_end.cpp
+  src/fanuc/boring_cycles.cpp
   src/mach3/mach3_flavour.cpp
   src/heidenhain/heidenhain_front_end.cpp
+  src/heidenhain/corner_rounding.cpp
   src/siemens840d/siemens_front_end.cpp
   src/dialect_detect/dialect_detect.cpp
 )

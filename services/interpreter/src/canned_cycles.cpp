@@ -1,4 +1,4 @@
-// Canned cycles G73, G81-G89 in the XY, YZ and XZ planes (LinuxCNC convert_cycle*), with
+// Canned cycles G73, G74, G81-G89 in the XY, YZ and XZ planes (LinuxCNC convert_cycle*), with
 // G98/G99 retract, L repeats, incremental positioning and Q pecks. Every call a cycle makes
 // carries a CycleTag describing the hole.
 #include <cmath>
@@ -92,7 +92,8 @@ void Executor::canned_cycle(const BlockCommand& b, int motion) {
   // Sticky cycle parameters, checked as LinuxCNC does.
   double p = 0, q = 0;
   bool needs_p = motion == 820 || motion == 860 || motion == 880 || motion == 890;
-  if (needs_p || motion == 840) {
+  const bool tapping = motion == 740 || motion == 840;
+  if (needs_p || tapping) {
     if (!b.has('p') && !same_cycle && needs_p) {
       fail(col, "Dwell time P word missing with G" + std::to_string(motion / 10));
     }
@@ -123,6 +124,9 @@ void Executor::canned_cycle(const BlockCommand& b, int motion) {
   }
   if (motion == 840 && s_.spindle != Direction::Clockwise) {
     fail(col, s_.spindle == Direction::Stopped ? "Spindle not turning in G84" : "Spindle turning counterclockwise in G84");
+  }
+  if (motion == 740 && s_.spindle != Direction::Counterclockwise) {
+    fail(col, s_.spindle == Direction::Stopped ? "Spindle not turning in G74" : "Spindle turning clockwise in G74");
   }
 
   CycleTag tag;
@@ -202,17 +206,20 @@ void Executor::canned_cycle(const BlockCommand& b, int motion) {
         traverse(aa, bb, clear_cc);
         break;
       }
+      case 740:
       case 840: {
+        // right-hand (G84) or left-hand (G74) tapping: the spindle reverses at the bottom
+        const bool right_hand = motion == 840;
         bool feed_override = s_.feed_override, speed_override = s_.speed_override;
         emit(DisableFeedOverride{0});
         emit(DisableSpeedOverride{0});
         feed(aa, bb, cc);
         emit(StopSpindleTurning{0});
-        emit(StartSpindleCounterclockwise{0});
+        if (right_hand) emit(StartSpindleCounterclockwise{0}); else emit(StartSpindleClockwise{0});
         emit(Dwell{p});
         feed(aa, bb, clear_cc);
         emit(StopSpindleTurning{0});
-        emit(StartSpindleClockwise{0});
+        if (right_hand) emit(StartSpindleClockwise{0}); else emit(StartSpindleCounterclockwise{0});
         if (feed_override) emit(EnableFeedOverride{0});
         if (speed_override) emit(EnableSpeedOverride{0});
         break;
@@ -274,7 +281,7 @@ void Executor::canned_cycle(const BlockCommand& b, int motion) {
     if (save_mode == MotionControlMode::Continuous) emit(SetNaivecamTolerance{s_.naivecam_tolerance});
   }
   cycle_tag_.reset();
-  if (needs_p || motion == 840) s_.cycle_p = p;
+  if (needs_p || tapping) s_.cycle_p = p;
   if (motion == 730 || motion == 830) s_.cycle_q = q;
   s_.cycle_l = repeats;
   s_.cycle_r = r_word;

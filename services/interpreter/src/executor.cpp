@@ -137,7 +137,7 @@ bool Executor::execute(const BlockCommand& b, const Source& source, const std::s
   source_ = source;
   file_ = &file;
   line_ = b.line;
-  cycle_tag_.reset();
+  cycle_tag_ = spelled_hole_;
   comp_column_ = b.g[kGMotion] != -1 ? b.g_column[kGMotion] : 1;
   check_block(b);
 
@@ -209,10 +209,10 @@ void Executor::check_block(const BlockCommand& b) {
     fail(b.g_column[kGNonModal], "Must use G0 or G1 with G53");
   }
   if (b.has('p') && b.g[kGNonModal] != 40 && b.g[kGNonModal] != 100 && b.g[kGControl] != 640 &&
-      motion != 820 && motion != 860 && motion != 880 && motion != 890 && motion != 20 && motion != 30 &&
-      b.m[kMOverride] == -1 && b.m[kMSpindle] != 19 &&
-      !(motion == -1 && (s_.motion == 20 || s_.motion == 30 || s_.motion == 820 || s_.motion == 860 ||
-                         s_.motion == 880 || s_.motion == 890))) {
+      motion != 740 && motion != 820 && motion != 840 && motion != 860 && motion != 880 && motion != 890 &&
+      motion != 20 && motion != 30 && b.m[kMOverride] == -1 && b.m[kMSpindle] != 19 &&
+      !(motion == -1 && (s_.motion == 20 || s_.motion == 30 || s_.motion == 740 || s_.motion == 820 ||
+                         s_.motion == 840 || s_.motion == 860 || s_.motion == 880 || s_.motion == 890))) {
     fail(b.col('p'), "P word with no G code or M code that uses it");
   }
   if (b.has('e')) fail(b.col('e'), "E word with no G70, G76, M66, M67 or M68 to use it");

@@ -38,6 +38,15 @@ class Executor final : public ComputedParameters {
   // cutter compensation still holds back.
   void end_of_file();
 
+  // A canned cycle a dialect front-end spells out as plain blocks (Fanuc G76, G87): the calls of
+  // the blocks executed until end_spelled_hole() are one hole's, tagged with `tag` (cycle_id is
+  // numbered here, after the holes the executor's own cycles made).
+  void begin_spelled_hole(canonical::CycleTag tag) {
+    tag.cycle_id = ++s_.cycle_count;
+    spelled_hole_ = tag;
+  }
+  void end_spelled_hole() { spelled_hole_.reset(); }
+
   const ModalState& state() const { return s_; }
   std::optional<double> computed(std::string_view name) const override;
 
@@ -122,6 +131,7 @@ class Executor final : public ComputedParameters {
   ModalState s_;
   canonical::Source source_;
   std::optional<canonical::CycleTag> cycle_tag_;
+  std::optional<canonical::CycleTag> spelled_hole_;  // begin_spelled_hole()
   const std::string* file_ = nullptr;
   std::uint32_t line_ = 0;
 

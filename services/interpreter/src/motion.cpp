@@ -9,7 +9,7 @@ using namespace canonical;
 
 namespace {
 bool is_canned_cycle(int motion) {
-  return motion == 730 || (motion >= 810 && motion <= 890);
+  return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890);
 }
 }  // namespace
 

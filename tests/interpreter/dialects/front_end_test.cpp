@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -161,6 +162,56 @@ TEST(Fanuc, ErrorsAreLocated) {
   EXPECT_EQ(e.where().line, 2u);
   EXPECT_EQ(e.where().column, 1u);
   EXPECT_NE(e.message().find("O5000"), std::string::npos);
+}
+
+TEST(Fanuc, TappingAndBoringCyclesTagTheirHoles) {
+  const std::string program =
+      "G21 G90 G17\nS400 M4\nG0 Z30.\nG99 G74 X10. Y10. Z-12. R3. F280\nG80 M3\nG0 Z30.\n"
+      "G98 G76 X20. Y10. Z-15. R2. Q0.5 F60\nG80\nG87 X40. Y10. Z-5. R-22. Q1. F50\nG80\nM30\n";
+  auto sink = run(program, Dialect::Fanuc);
+  std::map<std::uint32_t, ncbridge::canonical::CycleTag> holes;
+  int orients = 0;
+  for (const auto& c : sink.calls) {
+    if (c.cycle) holes[c.cycle->cycle_id] = *c.cycle;
+    if (std::holds_alternative<ncbridge::canonical::OrientSpindle>(c.data)) {
+      ++orients;
+      EXPECT_TRUE(c.cycle.has_value()) << "an oriented stop outside a hole";
+    }
+  }
+  ASSERT_EQ(holes.size(), 3u);
+  auto it = holes.begin();
+  EXPECT_EQ(it->second.g_code_x10, 740);
+  EXPECT_TRUE(it->second.retract_to_r);
+  ++it;
+  EXPECT_EQ(it->second.g_code_x10, 860);  // fine boring: boring, spindle stopped at the bottom
+  EXPECT_FALSE(it->second.retract_to_r);
+  EXPECT_DOUBLE_EQ(it->second.q, 0.5);
+  EXPECT_DOUBLE_EQ(it->second.z, -15.0);
+  EXPECT_DOUBLE_EQ(it->second.clearance, 30.0);
+  ++it;
+  EXPECT_EQ(it->second.g_code_x10, 870);
+  EXPECT_DOUBLE_EQ(it->second.r, -22.0);
+  EXPECT_DOUBLE_EQ(it->second.z, -5.0);
+  EXPECT_DOUBLE_EQ(it->second.x, 40.0);
+  EXPECT_EQ(orients, 3);  // one at the G76 bottom, two in G87 (above the part and at Z)
+  // the shift at the G76 bottom: +X by Q, at the hole bottom
+  auto e = sink.ends();
+  bool shifted = false;
+  for (const auto& p : e) shifted = shifted || near(p, 20.5, 10.0, -15.0);
+  EXPECT_TRUE(shifted);
+}
+
+TEST(Fanuc, TappingAndBoringErrorsAreLocated) {
+  auto e = error_of("G21 G90\nS400 M3\nG0 Z30.\nG99 G74 X10. Y10. Z-12. R3. F280\nM30\n", Dialect::Fanuc);
+  EXPECT_EQ(e.where().line, 4u);
+  EXPECT_EQ(e.where().column, 5u);
+  EXPECT_NE(e.message().find("clockwise in G74"), std::string::npos) << e.message();
+  e = error_of("G21 G90\nS400 M3\nG0 Z30.\nG87 X10. Y10. Z-12. R3. Q1. F80\nM30\n", Dialect::Fanuc);
+  EXPECT_EQ(e.where().line, 4u);
+  EXPECT_NE(e.message().find("G87"), std::string::npos) << e.message();
+  e = error_of("G21 G90\nG0 Z30.\nG76 X10. Y10. Z-12. R3. Q1. F80\nM30\n", Dialect::Fanuc);
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_NE(e.message().find("Spindle not turning in G76"), std::string::npos) << e.message();
 }
 
 // ---- Mach3

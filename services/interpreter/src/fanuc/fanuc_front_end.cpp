@@ -10,6 +10,7 @@
 #include "block_model.hpp"
 #include "expression.hpp"
 #include "fanuc/block_reader.hpp"
+#include "fanuc/boring_cycles.hpp"
 #include "lowering/dialect_machine.hpp"
 #include "lowering/dialect_table.hpp"
 #include "lowering/infix_expression.hpp"
@@ -91,6 +92,8 @@ class Runner {
   std::optional<double> axis_target(char letter, const std::map<char, Value>& w, const Point3& here) const;
   void lower_motion(NeutralBlock& nb, const std::map<char, Value>& w);
   void lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w);
+  void spell_boring(NeutralBlock& nb, Point3 hole, double dx, double dy, double r_abs, double z_abs, int repeats,
+                    std::uint32_t col);
 
   const Options& options_;
   const Flavour& flavour_;
@@ -119,6 +122,7 @@ class Runner {
   std::optional<double> last_r_, last_q_;
   double initial_z_ = 0;
   Point3 local_offset_;  // G52
+  std::uint32_t cycle_column_ = 0;  // column of this block's canned-cycle G code, 0 if none
 };
 
 std::size_t Runner::add_file(ProgramText text) {
@@ -411,6 +415,7 @@ bool Runner::run_block() {
   }
 
   // G codes through the dictionary
+  cycle_column_ = 0;
   enum class Special { None, Dwell, Rotation, Local, Macro, DataSetting, Home, Machine, SetOrigin };
   Special special = Special::None;
   bool rotation_on = false;
@@ -420,6 +425,7 @@ bool Runner::run_block() {
     if (e == nullptr) m_.fail(g.column, "G" + lowering::code_key(g.v) + " is not a " + table_.dialect + " G code ncbridge supports");
     const std::string& meta = e->meta;
     if (e->cycle) {
+      cycle_column_ = g.column;
       bool was_cycle = motion_ == 73 || motion_ == 74 || motion_ == 76 || (motion_ >= 81 && motion_ <= 89);
       if (!was_cycle) initial_z_ = m_.position().z;  // the initial level G91 R is measured from
       motion_ = *e->cycle;
@@ -691,10 +697,13 @@ void Runner::lower_motion(NeutralBlock& nb, const std::map<char, Value>& w) {
 void Runner::lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w) {
   const std::string key = std::to_string(motion_);
   auto roles_it = table_.cycle_words.find(key);
-  std::uint32_t col = w.begin()->second.column;
-  if (roles_it == table_.cycle_words.end() || motion_ == 74 || motion_ == 76 || motion_ == 87) {
-    m_.fail(col, "G" + key + " is read but not supported yet: its motion differs from the RS274 cycles");
+  // errors name the cycle's G code, or the block's first position word when the cycle is modal
+  std::uint32_t col = cycle_column_;
+  for (char letter : {'x', 'y', 'z', 'r'}) {
+    if (col == 0 && w.count(letter)) col = w.at(letter).column;
   }
+  if (col == 0) col = w.begin()->second.column;
+  if (roles_it == table_.cycle_words.end()) m_.fail(col, "G" + key + " is not a canned cycle of " + table_.dialect);
   const auto& roles = roles_it->second;
   int repeats = 1;
   std::optional<double> dwell;
@@ -704,7 +713,7 @@ void Runner::lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w) {
     const std::string& role = r->second;
     if (role == "retract_plane") cycle_r_ = last_r_ = v.v;
     else if (role == "bottom") cycle_z_ = v.v;
-    else if (role == "peck") cycle_q_ = last_q_ = v.v;
+    else if (role == "peck" || role == "shift") cycle_q_ = last_q_ = v.v;
     else if (role == "repeat") repeats = static_cast<int>(std::lround(v.raw));
     else if (role == "dwell") {
       if (v.had_point) {
@@ -754,6 +763,10 @@ void Runner::lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w) {
     hole.y = polar_radius_ * std::sin(a);
     dx = dy = 0;
   }
+  if (motion_ == 76 || motion_ == 87) {
+    spell_boring(nb, hole, dx, dy, r_abs, z_abs, repeats, col);
+    return;
+  }
   for (int k = 0; k < repeats; ++k) {
     if (k > 0) nb.clear();
     hole.x += dx;
@@ -766,10 +779,39 @@ void Runner::lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w) {
     nb.add('r', r_abs + m_.frame.offset.z, col);
     if (needs_q) nb.add('q', *cycle_q_, col);
     bool needs_p = motion_ == 82 || motion_ == 86 || motion_ == 88 || motion_ == 89;
-    if (needs_p || (motion_ == 84 && cycle_p_)) nb.add('p', cycle_p_.value_or(0.0), col);
+    if (needs_p || ((motion_ == 84 || motion_ == 74) && cycle_p_)) nb.add('p', cycle_p_.value_or(0.0), col);
     if (k + 1 < repeats) {
       if (m_.execute(nb)) return;
     }
+  }
+}
+
+void Runner::spell_boring(NeutralBlock& nb, Point3 hole, double dx, double dy, double r_abs, double z_abs,
+                          int repeats, std::uint32_t col) {
+  // the block's other words (F, S, G98/G99, ...) first, then the holes as plain blocks
+  m_.execute(nb);
+  nb.clear();
+  if (plane_ != 17) m_.fail(col, "G" + std::to_string(motion_) + " outside the XY plane (G17) is not supported");
+  if (!cycle_q_) m_.comment("ncbridge: G" + std::to_string(motion_) + " without Q: no shift at the bottom");
+  const double q = std::fabs(cycle_q_.value_or(0.0));
+  // parameter 5101 RD2 RD1: 0 = +X, 1 = -X, 2 = +Y, 3 = -Y, in machine axes (not rotated)
+  const int direction = static_cast<int>(table_.setting("boring_shift_direction", 0));
+  BoringHole h;
+  h.shift_x = direction == 0 ? q : direction == 1 ? -q : 0.0;
+  h.shift_y = direction == 2 ? q : direction == 3 ? -q : 0.0;
+  h.q = q;
+  h.initial = initial_z_ + m_.frame.offset.z;
+  h.r = r_abs + m_.frame.offset.z;
+  h.z = z_abs + m_.frame.offset.z;
+  h.dwell = cycle_p_.value_or(0.0);
+  h.repeat = repeats;
+  for (int k = 0; k < repeats; ++k) {
+    hole.x += dx;
+    hole.y += dy;
+    const Point3 e = m_.frame.to_executor({hole.x, hole.y, 0});
+    h.x = e.x;
+    h.y = e.y;
+    if (motion_ == 76) fine_boring(m_, h, col); else back_boring(m_, h, col);
   }
 }
 

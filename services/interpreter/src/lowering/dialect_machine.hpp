@@ -37,6 +37,10 @@ class DialectMachine {
 
   // Runs one neutral block through the RS274 executor. True when it ended the program.
   bool execute(const NeutralBlock& block);
+  // The blocks executed until end_spelled_hole() are one hole of a canned cycle the front-end
+  // spells out as plain blocks (Executor::begin_spelled_hole).
+  void begin_spelled_hole(const canonical::CycleTag& tag) { executor_.begin_spelled_hole(tag); }
+  void end_spelled_hole() { executor_.end_spelled_hole(); }
   void comment(const std::string& text);  // a COMMENT call
   void message(const std::string& text);  // a MESSAGE call
 
