@@ -24,4 +24,7 @@ run p04_open_pockets      "$cam/p04_open_pockets/part.linuxcnc.ngc"     "$cam/p0
 run p05_slots             "$cam/p05_slots/part.nc"                      "$cam/p05_slots"
 run paper_face_mill       "$paper/face_mill.ngc"                        "$paper"
 run paper_test_part       "$paper/test_part.ngc"                        "$paper"
+for part in "$here"/../../tests/cc2/parts/p*/; do  # hand-designed parts (tests/cc2/parts)
+  run "$(basename "$part")" "$part/part.ngc" "$part"
+done
 "$build/bin/feature_recognition_score" --reports "$work" "$here/../.." "$shared"

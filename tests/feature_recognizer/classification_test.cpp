@@ -198,7 +198,8 @@ TEST(Recognition, DrilledHolesAreThroughWhenThePointBreaksOutElseConical) {
 
 TEST(Recognition, PecksDrillAndReamAtOnePlaceAreOneHole) {
   ToolpathBuilder b;
-  b.workingstep(make_tool(2, ToolType::Drill, 20, 118)).drill(20, 60, 5, -10).drill(20, 60, 5, -20).drill(20, 60, 5, -40);
+  // Pecks: the tool goes back into the hole and feeds on from just above where it stopped.
+  b.workingstep(make_tool(2, ToolType::Drill, 20, 118)).drill(20, 60, 5, -10).drill(20, 60, -9, -20).drill(20, 60, -19, -40);
   b.workingstep(make_tool(3, ToolType::Reamer, 22)).drill(20, 60, 5, -40);
   const auto& f = only(fr::recognize(b.steps(), block()));
   EXPECT_EQ(f.type, fr::FeatureType::RoundHole);
@@ -209,6 +210,16 @@ TEST(Recognition, PecksDrillAndReamAtOnePlaceAreOneHole) {
   EXPECT_EQ(f.operations[0].layers, 3);
   EXPECT_EQ(f.operations[1].type, fr::OperationType::Reaming);
   EXPECT_EQ(f.operations[1].workingsteps, std::vector<std::size_t>{1});
+}
+
+TEST(Recognition, AHoleDrilledAgainDeeperFromTheSameStartIsDrilling) {
+  // Xú et al.'s test part: G81 at three depths, each fed from the R plane (no cycle tag here).
+  ToolpathBuilder b;
+  b.workingstep(make_tool(2, ToolType::Drill, 20, 118)).drill(20, 60, 5, -10).drill(20, 60, 5, -20).drill(20, 60, 5, -40);
+  const auto& f = only(fr::recognize(b.steps(), block()));
+  ASSERT_EQ(f.operations.size(), 1u);
+  EXPECT_EQ(f.operations[0].type, fr::OperationType::Drilling);
+  EXPECT_EQ(f.operations[0].layers, 3);
 }
 
 TEST(Recognition, NestedPocketsAreTwoFeaturesTheInnerStartingAtTheOuterFloor) {

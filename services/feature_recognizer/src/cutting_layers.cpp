@@ -132,6 +132,38 @@ Layer make_layer(const CuttingPass& pass, const ToolpathWorkingstep& ws, std::ve
   return layer;
 }
 
+double xy_length(const Layer& layer) {
+  double length = 0;
+  for (const auto& path : layer.paths) {
+    for (std::size_t i = 1; i < path.size(); ++i) length += std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
+  }
+  return length;
+}
+
+// A short run above the level the pass cuts at, then back down to it (or the end of the pass):
+// the tool lifting over a tab or a clamp, part of the lower level.
+void merge_tabs(std::vector<Layer>& slices) {
+  for (std::size_t k = 1; k < slices.size();) {
+    auto& low = slices[k - 1];
+    const bool rises = slices[k].z > low.z + kLevelTolerance;
+    const bool back = k + 1 == slices.size() || std::abs(slices[k + 1].z - low.z) < kLevelTolerance;
+    if (!rises || !back || xy_length(slices[k]) >= xy_length(low)) {
+      ++k;
+      continue;
+    }
+    const std::size_t last = std::min(k + 1, slices.size() - 1);
+    for (std::size_t j = k; j <= last; ++j) {
+      auto& path = low.paths.back();
+      path.insert(path.end(), slices[j].paths.front().begin() + 1, slices[j].paths.front().end());
+      for (auto w : slices[j].workingsteps) {
+        if (low.workingsteps.back() < w) low.workingsteps.push_back(w);
+      }
+      low.z_top = std::max(low.z_top, slices[j].z_top);
+    }
+    slices.erase(slices.begin() + static_cast<std::ptrdiff_t>(k), slices.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+  }
+}
+
 // Slices a milling pass at its cutting levels: each run of horizontal moves is a level; the
 // moves that descend to it (plunge, ramp, helix) belong to it; moves after the last level
 // (a feed retract) belong to the last level.
@@ -184,6 +216,7 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
       out.push_back(make_layer(pass, ws, piece, piece_first));
     }
   }
+  merge_tabs(out);
   for (auto& layer : out) {
     for (const auto& arc : pass.arcs) {
       if (std::min(arc.z_start, arc.z_end) >= layer.z - kLevelTolerance &&
@@ -241,6 +274,7 @@ bool is_hole_making_tool(setup::ToolType type) {
 CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkingstep>& workingsteps,
                                                 double chord_tolerance) {
   CutterLocationAnalysis out;
+  std::size_t run_begin = 0;  // the first layer of the current run of one tool at one level
   for (const auto& pass : cut_into_passes(workingsteps, chord_tolerance)) {
     const auto& ws = workingsteps[pass.workingstep];
     if (pass.z_only() || (is_hole_making_tool(ws.tool.type) && ws.cycle)) {
@@ -269,22 +303,34 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
     for (auto& layer : slice_pass(pass, ws)) {
       const double r = ws.tool.diameter / 2;
       layer.extent = path_box(layer.paths, r);
-      // Consecutive pieces at the same level, with the same tool, touching: one layer.
-      if (!out.layers.empty()) {
-        auto& prev = out.layers.back();
-        if (!prev.freeform && !layer.freeform && prev.tool.number == layer.tool.number &&
-            std::abs(prev.z - layer.z) < kLevelTolerance && boxes_touch(prev.extent, layer.extent)) {
-          for (auto& p : layer.paths) prev.paths.push_back(std::move(p));
-          prev.arcs.insert(prev.arcs.end(), layer.arcs.begin(), layer.arcs.end());
-          for (auto w : layer.workingsteps) {
-            if (prev.workingsteps.back() < w) prev.workingsteps.push_back(w);
-          }
-          prev.z_top = std::max(prev.z_top, layer.z_top);
-          prev.extent = path_box(prev.paths, r);
-          continue;
+      // Pieces of one tool at one level, one after the other, touching (also through others of
+      // the run, as passes broken around an island are): one layer.
+      const bool continues_run = run_begin < out.layers.size() && !layer.freeform &&
+                                 !out.layers.back().freeform && out.layers.back().tool.number == layer.tool.number &&
+                                 std::abs(out.layers.back().z - layer.z) < kLevelTolerance;
+      if (!continues_run) run_begin = out.layers.size();
+      out.layers.push_back(std::move(layer));
+      for (bool merged = true; merged;) {
+        merged = false;
+        auto& last = out.layers.back();
+        for (std::size_t k = run_begin; k + 1 < out.layers.size(); ++k) {
+          if (!boxes_touch(out.layers[k].extent, last.extent)) continue;
+          auto& into = out.layers[k];
+          for (auto& p : last.paths) into.paths.push_back(std::move(p));
+          into.arcs.insert(into.arcs.end(), last.arcs.begin(), last.arcs.end());
+          into.workingsteps.insert(into.workingsteps.end(), last.workingsteps.begin(), last.workingsteps.end());
+          std::sort(into.workingsteps.begin(), into.workingsteps.end());
+          into.workingsteps.erase(std::unique(into.workingsteps.begin(), into.workingsteps.end()), into.workingsteps.end());
+          into.z_top = std::max(into.z_top, last.z_top);
+          into.extent = path_box(into.paths, r);
+          // The merged layer goes last, so that it can absorb the others it now touches.
+          Layer moved = std::move(into);
+          out.layers.erase(out.layers.begin() + static_cast<std::ptrdiff_t>(k));
+          out.layers.back() = std::move(moved);
+          merged = true;
+          break;
         }
       }
-      out.layers.push_back(std::move(layer));
     }
   }
   return out;

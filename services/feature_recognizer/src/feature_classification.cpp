@@ -1,6 +1,7 @@
 #include "feature_classification.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "milling_strategy.hpp"
@@ -152,6 +153,59 @@ Ring outer_ring(const Region& r) {
   return best;
 }
 
+// A boss left standing: the largest area the group's cut surrounds without cutting it, when no
+// other group cuts into it either (so material stands there), and the cut does not go through
+// (a core inside a through cut falls out). Its outside profile is what the group machined.
+// The cut must hug the island (a ring about one tool wide, as a profile pass leaves): a pocket
+// or step cleared around an island is wider.
+std::optional<Region> standing_island(std::size_t group_index, const std::vector<MillingGroup>& groups,
+                                      const std::vector<Layer>& layers, const PartEnvelope& part, double tool_diameter) {
+  const auto& group = groups[group_index];
+  if (group.floor <= part.bottom_z + 1e-3) return std::nullopt;
+  std::optional<Region> island;
+  double island_area = 0, ring_width = 0;
+  for (const auto& pwh : group.area.polygons()) {
+    for (const auto& hole : pwh.holes) {
+      Region r = Region::polygon(hole);
+      const double a = r.area();
+      if (a <= island_area) continue;
+      const double ring_area = Region::polygon(pwh.outer).area() - a;
+      ring_width = ring_area / ((perimeter(pwh.outer) + perimeter(hole)) / 2);
+      island_area = a, island = std::move(r);
+    }
+  }
+  if (!island || island_area < 1.0 || ring_width > 1.5 * tool_diameter) return std::nullopt;
+  // Cuts above the group's highest level (a face over the boss) leave it standing.
+  double highest = group.floor;
+  for (auto i : group.layers()) highest = std::max(highest, layers[i].z);
+  const auto box = island->bbox();
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (g == group_index || groups[g].floor > highest + 1e-3 || !boxes_overlap(box, groups[g].area.bbox())) continue;
+    if (island->intersected(groups[g].area).area() > 0.05 * island->area()) return std::nullopt;
+  }
+  return island;
+}
+
+// The length of each side of the part (x-, x+, y-, y+) where material still stands above
+// `floor` when the group is cut: earlier groups cutting to that floor or deeper have removed the
+// rest. A step runs along most of what stands there.
+std::array<double, 4> standing_side_lengths(const MillingGroup& group, const std::vector<MillingGroup>& groups,
+                                            const PartEnvelope& part) {
+  constexpr double kStrip = 1.0;
+  const Box2& e = part.box;
+  const Box2 strips[4] = {{e.xmin, e.ymin, e.xmin + kStrip, e.ymax}, {e.xmax - kStrip, e.ymin, e.xmax, e.ymax},
+                          {e.xmin, e.ymin, e.xmax, e.ymin + kStrip}, {e.xmin, e.ymax - kStrip, e.xmax, e.ymax}};
+  Region removed;
+  for (const auto& g : groups) {
+    if (g.sequence < group.sequence && g.floor <= group.floor + 1e-3) removed = removed.united(g.area);
+  }
+  std::array<double, 4> out{};
+  for (int s = 0; s < 4; ++s) {
+    out[s] = Region::rectangle(strips[s]).intersected(part.outline).minus(removed).area() / kStrip;
+  }
+  return out;
+}
+
 // The straight centre line of a slot whose area is the rectangle `rect`.
 std::vector<Point2> rectangle_course(const OrientedRectangle& rect, double end_inset) {
   const double a = rect.angle_deg * 3.14159265358979323846 / 180;
@@ -213,6 +267,7 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
       f.x = c.x, f.y = c.y;
     }
     f.bottom = group.floor <= part.bottom_z + 1e-3 ? BottomCondition::Through : BottomCondition::Planar;
+    if (f.bottom == BottomCondition::Through) f.bottom_z = part.bottom_z;
     f.operations = make_operations(group, layers, f.type);
     return out;
   }
@@ -223,6 +278,7 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   const Box2 fbox = *footprint.bbox();
   const Point2 fcenter = box_center(fbox);
   f.bottom = group.floor <= part.bottom_z + 1e-3 ? BottomCondition::Through : BottomCondition::Planar;
+  if (f.bottom == BottomCondition::Through) f.bottom_z = part.bottom_z;  // CAM cuts a little below
 
   auto finish = [&](FeatureType type) {
     f.type = type;
@@ -249,10 +305,33 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
     return finish(FeatureType::PlanarFace);
   }
 
-  const auto contact = open_contact(group.area, part);
   std::vector<StrategyAnalysis> strategies;
   for (auto i : group.layers()) strategies.push_back(analyse_strategy(layers[i]));
-  const bool all_circles = std::all_of(strategies.begin(), strategies.end(), [](const auto& s) { return s.single_circle; });
+  // A hole milled by interpolation: in every layer circles about one centre, one radius or a
+  // helix at each of several radii (a circular pocket is cleared by flat concentric circles).
+  const bool all_circles = std::all_of(strategies.begin(), strategies.end(), [&](const auto& s) {
+    return !s.circle_radii.empty() && (s.single_circle || s.helical) &&
+           std::hypot(s.circle_center.x - strategies.front().circle_center.x,
+                      s.circle_center.y - strategies.front().circle_center.y) < 0.05;
+  });
+  const bool all_helical = std::all_of(strategies.begin(), strategies.end(), [](const auto& s) { return s.helical; });
+
+  // A helix leaving a core is a hole (CAM does not leave pins standing in a blind hole).
+  auto island = all_circles && all_helical ? std::nullopt
+                                           : standing_island(group_index, groups, layers, part, first_tool.diameter);
+  if (island) {
+    f.type = FeatureType::GeneralOutsideProfile;
+    const Ring boss = outer_ring(*island);
+    f.profile = fit_closed_profile(boss, island->area());
+    const auto rect = minimum_area_rectangle(boss);
+    f.x = rect.center.x, f.y = rect.center.y;
+    f.bottom = BottomCondition::Planar;
+    out.footprint = *island;  // its top is the boss's
+    f.operations = make_operations(group, layers, f.type);
+    return out;
+  }
+
+  const auto contact = open_contact(group.area, part);
   const bool all_center_lines = std::all_of(strategies.begin(), strategies.end(), [](const auto& s) {
     return s.strategy == Strategy::CenterMilling;
   });
@@ -263,8 +342,10 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   if (contact.pieces.empty()) {
     if (all_circles) {
       const auto& s = strategies.front();
+      double radius = 0;
+      for (const auto& l : strategies) radius = std::max(radius, l.circle_radius);
       f.x = s.circle_center.x, f.y = s.circle_center.y;
-      f.diameter = 2 * s.circle_radius + tool_d;
+      f.diameter = 2 * radius + tool_d;
       f.profile.shape = ProfileShape::Circular;
       f.profile.diameter = f.diameter;
       if (f.bottom != BottomCondition::Through) f.bottom = BottomCondition::Planar;
@@ -292,9 +373,9 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   f.profile.angle_deg = rect.angle_deg;
   f.profile.shape = ProfileShape::GeneralClosed;
 
-  const double side_length[4] = {part.box.height(), part.box.height(), part.box.width(), part.box.width()};
+  const auto standing = standing_side_lengths(group, groups, part);
   for (int s = 0; s < 4; ++s) {
-    if (contact.coverage[s] >= 0.9 * side_length[s]) {
+    if (standing[s] > 1.0 && contact.coverage[s] >= 0.9 * standing[s]) {
       f.bottom = BottomCondition::None;
       return finish(FeatureType::Step);
     }

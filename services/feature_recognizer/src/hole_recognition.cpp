@@ -1,5 +1,6 @@
 #include "hole_recognition.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ncbridge::feature_recognizer {
@@ -30,6 +31,9 @@ OperationType hole_operation_type(const setup::Tool& tool, const std::optional<c
       default: break;
     }
   }
+  // A drilling cycle that is not a peck cycle drills, even when repeated deeper (G81 at three
+  // depths, as in Xú et al.'s test part); uncycled descents in one workingstep are pecks.
+  if (cycle) return OperationType::Drilling;
   return passes > 1 ? OperationType::MultistepDrilling : OperationType::Drilling;
 }
 
@@ -58,8 +62,14 @@ std::vector<HoleCandidate> recognize_holes(const std::vector<DrillPass>& passes)
     hole.first_workingstep = c.passes.front()->workingstep;
     hole.sequence = c.passes.front()->sequence;
     hole.z_bottom = c.passes.front()->z_bottom;
+    // The hole's diameter is what drills, reamers and boring bars make: a spot or centre drill
+    // chamfers the edge and a tap cuts a thread (often larger), unless nothing else cut the hole.
+    auto sizes_hole = [](setup::ToolType t) {
+      return t != setup::ToolType::SpotDrill && t != setup::ToolType::CenterDrill && t != setup::ToolType::Tap;
+    };
+    const bool any_sizing = std::any_of(c.passes.begin(), c.passes.end(), [&](const DrillPass* p) { return sizes_hole(p->tool.type); });
     for (const auto* p : c.passes) {
-      hole.diameter = std::max(hole.diameter, p->tool.diameter);
+      if (!any_sizing || sizes_hole(p->tool.type)) hole.diameter = std::max(hole.diameter, p->tool.diameter);
       if (p->z_bottom <= hole.z_bottom) {
         hole.z_bottom = p->z_bottom;
         hole.point_angle = is_hole_making_tool(p->tool.type) ? p->tool.point_angle : 0;
@@ -75,9 +85,12 @@ std::vector<HoleCandidate> recognize_holes(const std::vector<DrillPass>& passes)
       RecognizedOperation op;
       const auto* first = run.front();
       // Pecks: more than one descending pass of one cycle, or of one uncycled workingstep.
+      // Uncycled, a peck starts its feed down in the hole (the tool rapids back in); a descent
+      // fed again from the first one's start is the hole drilled again, deeper.
       int descents = 0;
       for (const auto* p : run) {
-        if (!p->cycle || !first->cycle || p->cycle->cycle_id == first->cycle->cycle_id) ++descents;
+        const bool peck = p == first || p->cycle || p->z_top < first->z_top - 0.01;
+        if (peck && (!p->cycle || !first->cycle || p->cycle->cycle_id == first->cycle->cycle_id)) ++descents;
       }
       op.type = hole_operation_type(first->tool, first->cycle, descents);
       op.strategy = Strategy::Plunge;

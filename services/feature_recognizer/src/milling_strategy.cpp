@@ -15,22 +15,20 @@ struct Straight {
   double length() const { return std::hypot(b.x - a.x, b.y - a.y); }
 };
 
-// The cutting moves at the layer's level (its entry ramps and plunges left out).
+// The cutting moves from where the path first reaches the layer's level (its entry ramps,
+// plunges and helices left out) to its last move in XY: over a tab the run goes on.
 std::vector<std::vector<Point2>> level_runs(const Layer& layer) {
   std::vector<std::vector<Point2>> runs;
   for (const auto& path : layer.paths) {
-    std::vector<Point2> run;
+    std::size_t first = 0, last = 0;  // the first move at the level and the last in XY, 1-based
     for (std::size_t i = 1; i < path.size(); ++i) {
-      const bool on_level = std::abs(path[i].z - layer.z) < kLevel && std::abs(path[i - 1].z - layer.z) < kLevel;
-      if (on_level) {
-        if (run.empty()) run.push_back({path[i - 1].x, path[i - 1].y});
-        run.push_back({path[i].x, path[i].y});
-      } else if (!run.empty()) {
-        runs.push_back(std::move(run));
-        run.clear();
-      }
+      if (first == 0 && std::abs(path[i].z - layer.z) < kLevel && std::abs(path[i - 1].z - layer.z) < kLevel) first = i;
+      if (first != 0 && std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y) > 1e-9) last = i;
     }
-    if (!run.empty()) runs.push_back(std::move(run));
+    if (first == 0) continue;
+    std::vector<Point2> run;
+    for (std::size_t i = first - 1; i <= last; ++i) run.push_back({path[i].x, path[i].y});
+    runs.push_back(std::move(run));
   }
   return runs;
 }
@@ -54,35 +52,144 @@ int count_closed_loops(const std::vector<Point2>& run, double min_length) {
   return loops;
 }
 
+// True when the moves lie on one straight line (within 0.05 mm), the longest move's.
+bool on_one_line(const std::vector<Straight>& straights) {
+  const Straight* longest = nullptr;
+  for (const auto& s : straights) {
+    if (!longest || s.length() > longest->length()) longest = &s;
+  }
+  if (!longest || longest->length() < 1e-3) return false;
+  const double ux = (longest->b.x - longest->a.x) / longest->length(), uy = (longest->b.y - longest->a.y) / longest->length();
+  auto off = [&](Point2 p) { return std::abs(-(p.x - longest->a.x) * uy + (p.y - longest->a.y) * ux); };
+  return std::all_of(straights.begin(), straights.end(), [&](const Straight& s) { return off(s.a) < 0.05 && off(s.b) < 0.05; });
+}
+
+// Kåsa's algebraic circle fit (x² + y² + Dx + Ey + F = 0, least squares) of the path vertices
+// within 0.05 mm of the circle about `guess` with `radius`; `guess` when they are too few.
+Point2 fit_circle_center(const Layer& layer, Point2 guess, double radius) {
+  double s[3][3] = {}, t[3] = {};
+  int n = 0;
+  for (const auto& path : layer.paths) {
+    for (const auto& p : path) {
+      if (std::abs(std::hypot(p.x - guess.x, p.y - guess.y) - radius) > 0.05) continue;
+      const double x = p.x - guess.x, y = p.y - guess.y, row[3] = {x, y, 1}, rhs = -(x * x + y * y);
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) s[i][j] += row[i] * row[j];
+        t[i] += row[i] * rhs;
+      }
+      ++n;
+    }
+  }
+  if (n < 3) return guess;
+  // Cramer's rule on the 3 x 3 normal equations.
+  auto det = [](double m[3][3]) {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  };
+  const double d = det(s);
+  if (std::abs(d) < 1e-12) return guess;
+  double solution[2];
+  for (int k = 0; k < 2; ++k) {
+    double m[3][3];
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) m[i][j] = j == k ? t[i] : s[i][j];
+    }
+    solution[k] = det(m) / d;
+  }
+  return {guess.x - solution[0] / 2, guess.y - solution[1] / 2};
+}
+
+// The mean distance from `c` of the vertices near the circle of `radius` about it.
+double mean_distance(const Layer& layer, Point2 c, double radius) {
+  double sum = 0;
+  int n = 0;
+  for (const auto& path : layer.paths) {
+    for (const auto& p : path) {
+      const double r = std::hypot(p.x - c.x, p.y - c.y);
+      if (std::abs(r - radius) < 0.05) sum += r, ++n;
+    }
+  }
+  return n > 0 ? sum / n : radius;
+}
+
+// Whether the layer's moves go round one centre (the centre of their extent), at one or more
+// radii, each a full turn or more, with at most 10 % of the length elsewhere (links, the move
+// back to the centre). A chord counts as on the circle when its middle is within the sagitta
+// a chorded arc can have.
+bool find_circles(const Layer& layer, StrategyAnalysis& out) {
+  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+  for (const auto& path : layer.paths) {
+    for (const auto& p : path) {
+      xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);
+      ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
+    }
+  }
+  if (xmax <= xmin || ymax <= ymin) return false;
+  const Point2 c{(xmin + xmax) / 2, (ymin + ymax) / 2};
+  struct Ring {
+    double radius, sweep;
+  };
+  std::vector<Ring> rings;
+  double total = 0, on = 0, descent = 0;
+  for (const auto& path : layer.paths) {
+    for (std::size_t i = 1; i < path.size(); ++i) {
+      const auto& a = path[i - 1];
+      const auto& b = path[i];
+      const double length = std::hypot(b.x - a.x, b.y - a.y);
+      if (length < 1e-9) continue;
+      const double r0 = std::hypot(a.x - c.x, a.y - c.y), r1 = std::hypot(b.x - c.x, b.y - c.y);
+      if (std::abs(std::abs(r1 - r0) - length) < 1e-3 * length) continue;  // a radial link between circles
+      total += length;
+      const double rm = std::hypot((a.x + b.x) / 2 - c.x, (a.y + b.y) / 2 - c.y);
+      const double tol = std::max(0.02, 0.002 * r0);
+      if (r0 < 0.05 || std::abs(r0 - r1) > tol || r0 - rm > std::max(0.05, 0.005 * r0)) continue;
+      on += length;
+      descent += std::max(0.0, a.z - b.z);
+      double turn = std::atan2(b.y - c.y, b.x - c.x) - std::atan2(a.y - c.y, a.x - c.x);
+      while (turn > std::numbers::pi) turn -= 2 * std::numbers::pi;
+      while (turn < -std::numbers::pi) turn += 2 * std::numbers::pi;
+      const double r = (r0 + r1) / 2;
+      auto ring = std::find_if(rings.begin(), rings.end(), [&](const Ring& q) { return std::abs(q.radius - r) < tol; });
+      if (ring == rings.end()) {
+        rings.push_back({r, turn});
+      } else {
+        ring->sweep += turn;
+      }
+    }
+  }
+  if (rings.empty() || on < 0.9 * total) return false;
+  for (const auto& ring : rings) {
+    if (std::abs(ring.sweep) < 2 * std::numbers::pi - 0.01) return false;
+  }
+  std::sort(rings.begin(), rings.end(), [](const Ring& a, const Ring& b) { return a.radius < b.radius; });
+  // The extent's centre is off by up to a chord's sagitta: the circle through the outermost
+  // ring's vertices (which lie on the true circle) by least squares.
+  const auto fitted = fit_circle_center(layer, c, rings.back().radius);
+  for (const auto& ring : rings) out.circle_radii.push_back(mean_distance(layer, fitted, ring.radius));
+  out.circle_center = fitted;
+  out.circle_radius = out.circle_radii.back();
+  out.single_circle = rings.size() == 1;
+  out.helical = descent > 1e-3;
+  return true;
+}
+
 }  // namespace
 
 StrategyAnalysis analyse_strategy(const Layer& layer) {
   StrategyAnalysis out;
   const double tool_r = layer.tool.diameter / 2;
+
   const auto runs = level_runs(layer);
 
-  // A helix or circles about one centre with one radius: a hole milled by interpolation.
-  if (!layer.arcs.empty()) {
-    double arc_length = 0, total = 0;
-    for (const auto& a : layer.arcs) arc_length += std::abs(a.sweep) * a.radius;
-    for (const auto& path : layer.paths) {
-      for (std::size_t i = 1; i < path.size(); ++i) total += std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
+  // Circles or helices about one centre: a hole milled by interpolation, or a circular pocket.
+  if (find_circles(layer, out)) {
+    if (out.helical || out.single_circle) {
+      out.strategy = out.helical ? Strategy::Helical : Strategy::Contour;
+    } else {
+      out.strategy = Strategy::ContourParallel;
     }
-    const auto& first = layer.arcs.front();
-    bool same = true;
-    double turned = 0;
-    for (const auto& a : layer.arcs) {
-      same = same && std::hypot(a.center.x - first.center.x, a.center.y - first.center.y) < 0.01 &&
-             std::abs(a.radius - first.radius) < 0.01;
-      turned += a.sweep;
-    }
-    if (same && total > 0 && arc_length > 0.9 * total && std::abs(turned) >= 2 * std::numbers::pi - 1e-3) {
-      out.single_circle = true;
-      out.circle_center = first.center;
-      out.circle_radius = first.radius;
-      out.strategy = Strategy::Helical;
-      return out;
-    }
+    out.closed_loops = static_cast<int>(out.circle_radii.size());
+    return out;
   }
 
   std::vector<Straight> straights;
@@ -99,6 +206,12 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
     return out;
   }
   for (const auto& run : runs) out.closed_loops += count_closed_loops(run, 4 * std::max(tool_r, 0.5));
+
+  // Every move on one straight line (once, or back and forth): a slot along its centre line.
+  if (on_one_line(straights)) {
+    out.strategy = Strategy::CenterMilling;
+    return out;
+  }
 
   // Direction histogram of the long straight moves (1° bins, direction modulo 180°).
   std::map<int, double> bins;
@@ -143,7 +256,9 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
       out.strategy = Strategy::CenterMilling;  // one straight pass: a slot along its centre line
       return out;
     }
-    const bool sweeping = parallel_moves >= 3 && std::max(rising, falling) >= 0.75 * (rising + falling);
+    // Two passes side by side (joined by a rapid, as a face milled in two passes) sweep too.
+    const bool enough = parallel_moves >= 3 || (parallel_moves == 2 && out.closed_loops == 0);
+    const bool sweeping = enough && std::max(rising, falling) >= 0.75 * (rising + falling);
     if (sweeping) {
       std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
       out.stepover = gaps.empty() ? 0 : gaps[gaps.size() / 2];

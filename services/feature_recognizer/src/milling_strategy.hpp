@@ -10,9 +10,13 @@ struct StrategyAnalysis {
   Strategy strategy = Strategy::None;
   double stepover = 0;          // distance between neighbouring parallel passes or contours
   int closed_loops = 0;         // loops the path closes at the level
-  bool single_circle = false;   // every cutting move is an arc (helix) about one centre, one radius
-  Point2 circle_center;         // single_circle: its centre and path radius
-  double circle_radius = 0;
+  // Circles: the cutting moves go round one centre (arcs, or their chords as CC1 gives a helix),
+  // one full turn or more at each radius; links between them are short.
+  std::vector<double> circle_radii;  // ascending; empty when the path is not made of circles
+  bool helical = false;              // z falls along the circles (hole milling by helix)
+  bool single_circle = false;        // one radius
+  Point2 circle_center;
+  double circle_radius = 0;          // the largest
 };
 
 StrategyAnalysis analyse_strategy(const Layer& layer);

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -22,6 +23,31 @@ std::optional<FeatureType> feature_type_from(const std::string& name) {
     if (name == n) return t;
   }
   return std::nullopt;
+}
+
+template <typename Enum>
+std::optional<Enum> enum_from(const std::string& name, int count) {
+  for (int i = 0; i < count; ++i) {
+    if (to_string(static_cast<Enum>(i)) == name) return static_cast<Enum>(i);
+  }
+  return std::nullopt;
+}
+
+TruthOperation read_operation(const nlohmann::json& j, const std::string& file, const std::string& id) {
+  TruthOperation op;
+  const std::string type = j.value("type", std::string{}), strategy = j.value("strategy", std::string{"none"});
+  const auto t = enum_from<OperationType>(type, static_cast<int>(OperationType::FreeformOperation) + 1);
+  if (!t) throw InputError({file, 0, 0}, "feature '" + id + "' has an operation of unknown type '" + type + "'");
+  op.type = *t;
+  std::string words;
+  for (char c : strategy) words += c == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::size_t longest = 0;
+  for (int i = 0; i <= static_cast<int>(Strategy::Plunge); ++i) {
+    const auto name = to_string(static_cast<Strategy>(i));
+    if (words.rfind(name, 0) == 0 && name.size() > longest) longest = name.size(), op.strategy = static_cast<Strategy>(i);
+  }
+  op.tool_number = j.value("tool_number", 0);
+  return op;
 }
 
 double number(const nlohmann::json& j, const char* key, const std::string& file, const std::string& id) {
@@ -46,6 +72,9 @@ TruthFeature read_feature(const nlohmann::json& j, const std::string& file) {
   t.bottom_z = number(j, "bottom_z", file, t.id);
   if (j.contains("dimensions") && j["dimensions"].contains("diameter") && t.type == FeatureType::RoundHole) {
     t.diameter = j["dimensions"]["diameter"].get<double>();
+  }
+  if (j.contains("operations") && j["operations"].is_array()) {
+    for (const auto& o : j["operations"]) t.operations.push_back(read_operation(o, file, t.id));
   }
   switch (t.type) {
     case FeatureType::RoundHole:
@@ -143,6 +172,30 @@ Score score(const std::vector<RecognizedFeature>& recognized, const std::vector<
     s.overall.matched += ts.matched;
   }
   return s;
+}
+
+TypeScore score_operations(const std::vector<RecognizedFeature>& recognized, const std::vector<TruthFeature>& truth,
+                           const Score& features) {
+  TypeScore out;
+  for (const auto& m : features.matches) {
+    const auto& t = truth[m.truth_index].operations;
+    if (t.empty()) continue;
+    const auto& r = recognized[m.recognized_index].operations;
+    out.truth += static_cast<int>(t.size());
+    out.recognized += static_cast<int>(r.size());
+    std::size_t next = 0;  // in order: a matched recognised operation is not reused
+    for (const auto& want : t) {
+      for (std::size_t k = next; k < r.size(); ++k) {
+        if (r[k].type == want.type && r[k].tool_number == want.tool_number &&
+            (!want.strategy || r[k].strategy == *want.strategy)) {
+          ++out.matched;
+          next = k + 1;
+          break;
+        }
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace ncbridge::feature_recognizer

@@ -39,3 +39,8 @@ run "$cam/p05_slots/part.nc"                    "$cam/p05_slots/tools.json"     
 paper=$shared/corpus/paper
 run "$paper/face_mill.ngc" "$paper/tools.json" "$here/paper_face_mill.canon"
 run "$paper/test_part.ngc" "$paper/tools.json" "$here/paper_test_part.canon"
+# The hand-designed parts (tests/cc2/parts/make_parts.py), written without comments.
+for part in "$here"/../../cc2/parts/p*/; do
+  name=$(basename "$part")
+  run "$part/part.ngc" "$part/tools.json" "$here/$name.canon"
+done

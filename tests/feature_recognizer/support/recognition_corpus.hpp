@@ -1,7 +1,7 @@
 #pragma once
-// Test support: the recognition corpus (5 FreeCAD parts + the 2 programs of Xú et al. 2014):
-// committed canonical text (tests/feature_recognizer/data, comments stripped), tools, stock and
-// truth from the shared corpus.
+// Test support: the recognition corpus (5 FreeCAD parts + the 2 programs of Xú et al. 2014 +
+// 6 hand-designed parts of tests/cc2/parts): committed canonical text
+// (tests/feature_recognizer/data, comments stripped), tools, stock and truth.
 #include <filesystem>
 #include <string>
 #include <vector>

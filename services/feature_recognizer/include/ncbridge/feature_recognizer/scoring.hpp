@@ -4,6 +4,10 @@
 // features (holes, closed pockets, closed slots) or 5 mm for open ones (faces, steps, open
 // pockets, through slots, outside profiles); top_z and bottom_z within 0.2 mm; hole diameter
 // within 0.05 mm. Each feature matches at most once (closest first).
+// Operations (a truth feature's optional "operations": [{type, tool_number, strategy}]) are
+// scored on the matched features only: an operation matches when type, tool and strategy agree
+// (a strategy is read as the longest strategy name the truth's text starts with, "contour
+// parallel, 5 layers" = contour_parallel; text naming none is not compared).
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -14,12 +18,19 @@
 
 namespace ncbridge::feature_recognizer {
 
+struct TruthOperation {
+  OperationType type = OperationType::Drilling;
+  int tool_number = 0;
+  std::optional<Strategy> strategy;  // unset when the truth describes it in words we do not read
+};
+
 struct TruthFeature {
   std::string id;
   FeatureType type = FeatureType::Region;
   double x = 0, y = 0, top_z = 0, bottom_z = 0;
   std::optional<double> diameter;  // round holes
   bool closed = false;
+  std::vector<TruthOperation> operations;  // empty when the truth does not list them
 };
 
 // Reads the features of a truth file: a cam part's truth.json ("features": [...]) or, with
@@ -46,5 +57,11 @@ struct Score {
 };
 
 Score score(const std::vector<RecognizedFeature>& recognized, const std::vector<TruthFeature>& truth);
+
+// The operations of the matched features whose truth lists operations: `truth` counts the true
+// operations, `recognized` the recognised ones of those features, `matched` the pairs that agree
+// (each used once, in machining order).
+TypeScore score_operations(const std::vector<RecognizedFeature>& recognized, const std::vector<TruthFeature>& truth,
+                           const Score& features);
 
 }  // namespace ncbridge::feature_recognizer
