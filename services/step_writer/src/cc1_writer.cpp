@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <array>
 #include <functional>
-#include <map>
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
@@ -75,13 +74,12 @@ Bits3 bits_of(double x, double y, double z) {
   return {R::bits(x), R::bits(y), R::bits(z)};
 }
 
-// A named placement's (or plane's) name and exact value; named ones are shared exactly.
-using PlacementKey = std::pair<std::array<std::uint64_t, 9>, std::string_view>;
-PlacementKey key_of(std::string_view name, const sn::Axis2Placement3d& a) {
-  using R = part21::RecentInstances<3>;
-  return {{R::bits(a.location.x), R::bits(a.location.y), R::bits(a.location.z), R::bits(a.axis.x), R::bits(a.axis.y),
-           R::bits(a.axis.z), R::bits(a.ref_direction.x), R::bits(a.ref_direction.y), R::bits(a.ref_direction.z)},
-          name};
+// A named placement's (or plane's) exact value and name (as an index into the names seen).
+using PlacementKey = part21::RecentInstances<10>::Key;
+PlacementKey key_of(std::uint64_t name, const sn::Axis2Placement3d& a) {
+  using R = part21::RecentInstances<10>;
+  return {R::bits(a.location.x), R::bits(a.location.y), R::bits(a.location.z), R::bits(a.axis.x), R::bits(a.axis.y),
+          R::bits(a.axis.z), R::bits(a.ref_direction.x), R::bits(a.ref_direction.y), R::bits(a.ref_direction.z), name};
 }
 
 // Writes a project in three steps: begin() (the workpieces), element() for each executable of
@@ -190,24 +188,32 @@ class Cc1Writer {
     s_.ref(ref_direction);
     return s_.end();
   }
-  // Named placements and planes (security plane, feature placement, depth planes, setups) are
-  // few and shared exactly; the unnamed placements of arcs are shared while remembered.
+  // Named placements and planes (security plane, feature placement, depth planes, setups), like
+  // the unnamed placements of arcs, are shared while remembered (a large memory: programs
+  // return to few depths and places, but a streamed file must not remember them all).
+  std::uint64_t name_index(std::string_view name) {
+    for (std::size_t i = 0; i < names_.size(); ++i) {
+      if (names_[i] == name) return i;
+    }
+    names_.emplace_back(name);
+    return names_.size() - 1;
+  }
   InstanceId placement(const sn::Axis2Placement3d& a, std::string_view name) {
-    auto key = key_of(name, a);
-    if (auto it = placements_.find(key); it != placements_.end()) return it->second;
+    const PlacementKey key = key_of(name_index(name), a);
+    if (const InstanceId id = placements_.find(key)) return id;
     const InstanceId id = new_placement(a, name);
-    placements_.emplace(key, id);
+    placements_.remember(key, id);
     return id;
   }
   InstanceId plane(const sn::Plane& pl, std::string_view name) {
-    auto key = key_of(name, pl.position);
-    if (auto it = planes_.find(key); it != planes_.end()) return it->second;
+    const PlacementKey key = key_of(name_index(name), pl.position);
+    if (const InstanceId id = planes_.find(key)) return id;
     const InstanceId position = placement(pl.position, name);
     s_.begin("PLANE");
     s_.string(name);
     s_.ref(position);
     const InstanceId id = s_.end();
-    planes_.emplace(key, id);
+    planes_.remember(key, id);
     return id;
   }
   InstanceId arc_placement(const sn::Axis2Placement3d& a) {
@@ -730,7 +736,8 @@ class Cc1Writer {
   std::vector<std::uint32_t> feature_first_;
   std::vector<sn::OperationRef> feature_ops_;
   std::vector<InstanceId> tools_, technologies_, functions_, operations_, features_;  // 0: not written yet
-  std::map<PlacementKey, InstanceId> placements_, planes_;
+  std::vector<std::string> names_;  // of named placements and planes (few: ids of setups and workpieces, roles)
+  part21::RecentInstances<10> placements_{12}, planes_{12};
   part21::RecentInstances<3> points_{14}, directions_{10}, arc_placements_{10};
   part21::RecentInstances<2> circles_{10};
   // Scratch lists, one per level of nesting (curve <- toolpath list <- operation <- feature).

@@ -54,7 +54,7 @@ class InstanceStream {
   void ref(InstanceId id) {
     char* p = separator(room(kSeparatorChars + 1 + kMaxIdChars));
     *p++ = '#';
-    len_ = static_cast<std::size_t>(std::to_chars(p, p + kMaxIdChars, id).ptr - buf_.get());
+    len_ = static_cast<std::size_t>(write_id(p, id) - buf_.get());
   }
   void unset() { token("$"); }
   void string(std::string_view utf8) {
@@ -114,6 +114,7 @@ class InstanceStream {
 
  private:
   static constexpr std::size_t kMaxIdChars = 24;
+  static constexpr std::size_t kIdDigits = 20;  // of the largest 64-bit id
   static constexpr std::size_t kSeparatorChars = 4;  // ",\n  "
 
   InstanceId begin_instance(InstanceId id, std::string_view entity) {
@@ -121,13 +122,38 @@ class InstanceStream {
     line_start_ = len_;
     char* p = room(kMaxIdChars + entity.size() + 3);
     *p++ = '#';
-    p = std::to_chars(p, p + kMaxIdChars, id).ptr;
+    p = write_id(p, id);
     *p++ = '=';
     p = copy(entity, p);
     *p++ = '(';
     len_ = static_cast<std::size_t>(p - buf_.get());
     first_ = true;
     return id;
+  }
+
+  // Decimal digits of an id, two at a time from the end (ids are most of a file's numbers).
+  // Copies a fixed kIdDigits bytes to `p`, which has room for them (kMaxIdChars); those past the
+  // digits are overwritten by what follows.
+  static char* write_id(char* p, InstanceId id) {
+    static constexpr char kPairs[] =
+        "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+        "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+        "8081828384858687888990919293949596979899";
+    char digits[2 * kIdDigits];
+    char* q = digits + kIdDigits;
+    while (id >= 100) {
+      q -= 2;
+      std::memcpy(q, kPairs + 2 * (id % 100), 2);
+      id /= 100;
+    }
+    if (id >= 10) {
+      q -= 2;
+      std::memcpy(q, kPairs + 2 * id, 2);
+    } else {
+      *--q = static_cast<char>('0' + id);
+    }
+    std::memcpy(p, q, kIdDigits);
+    return p + (digits + kIdDigits - q);
   }
 
   // At least n free bytes at the end of the buffer.

@@ -22,11 +22,18 @@ void append_hex(std::string& out, std::uint32_t value, int digits) {
 
 constexpr double kPow10[] = {1, 10, 100, 1e3, 1e4, 1e5, 1e6};
 
-// Values in [1e-3, 1e5) with at most six decimals (most program coordinates): the shortest
+// Zero, and values in [1e-3, 1e5) with at most six decimals (most program coordinates): the shortest
 // round-trip text is the decimal with the fewest decimals that reads back as the value, and
 // std::to_chars writes it in fixed notation (never longer than the exponent form there). Found
 // without to_chars; nullptr when the value is not such a decimal.
 char* write_short_decimal(char* first, double value) {
+  if (value == 0) {  // 0. and -0.
+    char* p = first;
+    if (std::signbit(value)) *p++ = '-';
+    *p++ = '0';
+    *p++ = '.';
+    return p;
+  }
   const double magnitude = std::fabs(value);
   if (!(magnitude >= 1e-3 && magnitude < 1e5)) return nullptr;
   for (int k = 0; k < 7; ++k) {
