@@ -1,19 +1,26 @@
-// `ncbridge submit PROGRAM --tools T --stock S [--wait] -o OUT.stp`: publishes a job on the
-// programs topic for the running services (`ncbridge up`, deploy/). With --wait it shows the
-// stages' progress from the status topic and writes the job's Part 21 file to OUT.stp.
+// `ncbridge submit PROGRAM... --tools T --stock S [--wait] [-o OUT.stp | --output-dir DIR]`:
+// publishes jobs on the programs topic for the running services (`ncbridge up`, deploy/).
+// Several programs (files, directories of programs, or a --list file of "PROGRAM [TOOLS STOCK]"
+// lines) go out from one DDS participant, all published at once, then awaited together: a bulk
+// load pays discovery once. With --wait it shows the stages' progress (one job) or each job as it
+// ends (several), and writes each job's Part 21 file (-o for one job, --output-dir for several).
 // The bus is the one CYCLONEDDS_URI and NCBRIDGE_DDS_DOMAIN name (or --domain).
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "ncbridge/bus/participant.hpp"
@@ -28,18 +35,29 @@
 namespace ncbridge::cli {
 namespace {
 
+namespace fs = std::filesystem;
+
 struct SubmitArguments {
-  std::string program;
+  std::vector<std::string> programs;
+  std::string list;
   std::string tools;
   std::string stock;
   std::string dialect = "rs274ngc";
   std::string level = "cc1";
   std::string output;
+  std::string output_dir;
   std::string job_id;
   std::string subroutine_path;
   std::optional<std::uint32_t> domain;
   bool wait = false;
   double timeout_s = 600;
+};
+
+// One program to submit, with the tool list and stock it is converted with.
+struct Submission {
+  std::string program;
+  std::string tools;
+  std::string stock;
 };
 
 wire::Dialect dialect_of(const std::string& name) {
@@ -51,19 +69,65 @@ wire::Dialect dialect_of(const std::string& name) {
   return wire::Dialect::Rs274Ngc;
 }
 
-std::string read_program(const std::string& path) {
+std::string read_text(const std::string& path, const char* what) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0}, "cannot open program file");
+  if (!in) throw InputError({path, 0, 0}, std::string("cannot open ") + what);
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
 }
 
-std::string new_job_id(const std::string& program) {
-  std::random_device rd;
+bool is_program_file(const fs::path& p) {
+  static const std::set<std::string> kExtensions{".ngc", ".nc", ".tap", ".cnc", ".gcode", ".g", ".h", ".mpf", ".eia"};
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return kExtensions.contains(ext) && !p.filename().string().starts_with(".");
+}
+
+// The programs named on the command line (a directory: its program files, sorted) and in the
+// list file ("PROGRAM [TOOLS STOCK]" per line, relative to the list's folder; # comments).
+std::vector<Submission> submissions(const SubmitArguments& args) {
+  std::vector<Submission> out;
+  for (const std::string& p : args.programs) {
+    if (!fs::is_directory(p)) {
+      out.push_back({p, args.tools, args.stock});
+      continue;
+    }
+    std::vector<std::string> files;
+    for (const auto& entry : fs::directory_iterator(p)) {
+      if (entry.is_regular_file() && is_program_file(entry.path())) files.push_back(entry.path().string());
+    }
+    std::sort(files.begin(), files.end());
+    if (files.empty()) throw InputError({p, 0, 0}, "no program files in this folder");
+    for (std::string& f : files) out.push_back({std::move(f), args.tools, args.stock});
+  }
+  if (!args.list.empty()) {
+    const fs::path base = fs::path(args.list).parent_path();
+    const auto resolve = [&base](const std::string& p) { return fs::path(p).is_absolute() ? p : (base / p).string(); };
+    std::istringstream lines(read_text(args.list, "list file"));
+    std::uint32_t number = 0;
+    for (std::string line; std::getline(lines, line);) {
+      ++number;
+      std::istringstream words(line);
+      std::vector<std::string> w;
+      for (std::string word; words >> word;) w.push_back(word);
+      if (w.empty() || w[0].starts_with("#")) continue;
+      if (w.size() != 1 && w.size() != 3)
+        throw InputError({args.list, number, 1}, "expected PROGRAM or PROGRAM TOOLS STOCK");
+      out.push_back({resolve(w[0]), w.size() == 3 ? resolve(w[1]) : args.tools, w.size() == 3 ? resolve(w[2]) : args.stock});
+    }
+  }
+  for (const Submission& s : out) {
+    if (s.tools.empty() || s.stock.empty())
+      throw InputError({s.program, 0, 0}, "no tool list or stock for this program (--tools, --stock, or the list's columns)");
+  }
+  return out;
+}
+
+std::string new_job_id(const std::string& program, std::mt19937& random) {
   char suffix[9];
-  std::snprintf(suffix, sizeof suffix, "%08x", rd());
-  return std::filesystem::path(program).stem().string() + "-" + suffix;
+  std::snprintf(suffix, sizeof suffix, "%08x", static_cast<unsigned>(random()));
+  return fs::path(program).stem().string() + "-" + suffix;
 }
 
 const char* state_name(wire::JobState s) {
@@ -77,26 +141,54 @@ const char* state_name(wire::JobState s) {
   return "?";
 }
 
+void print_error(const wire::JobStatus& e) {
+  std::fprintf(stderr, "%s: error: %s (%s)\n", e.where.to_string().c_str(), e.message.c_str(), e.stage.c_str());
+}
+
 int run_submit(const SubmitArguments& args) {
-  wire::Job job;
-  job.job_id = args.job_id.empty() ? new_job_id(args.program) : args.job_id;
-  job.file_name = args.program;
-  job.program_text = read_program(args.program);
-  job.dialect = dialect_of(args.dialect);
-  job.tools = setup::read_tool_list(args.tools).tools();
-  job.stock = setup::read_stock(args.stock);
-  job.level = args.level == "cc2" ? wire::ConformanceClass::Cc2 : wire::ConformanceClass::Cc1;
-  job.output_name = args.output.empty() ? std::filesystem::path(args.program).stem().string() + ".stp"
-                                        : std::filesystem::path(args.output).filename().string();
+  const std::vector<Submission> list = submissions(args);
+  if (list.empty()) throw CLI::ValidationError("submit", "no program to submit");
+  const bool single = list.size() == 1;
+  if (!single && !args.job_id.empty()) throw CLI::ValidationError("--job-id", "only with one program");
+  if (!single && !args.output.empty()) throw CLI::ValidationError("-o", "only with one program: use --output-dir");
+  if (args.wait && single && args.output.empty() && args.output_dir.empty())
+    throw CLI::RequiredError("--output or --output-dir (with --wait)");
+  if (args.wait && !single && args.output_dir.empty()) throw CLI::RequiredError("--output-dir (with --wait and several programs)");
+
+  std::vector<std::string> subroutine_dirs;
   std::stringstream dirs(args.subroutine_path);
   for (std::string d; std::getline(dirs, d, ':');) {
-    if (!d.empty()) job.subroutine_path.push_back(std::filesystem::absolute(d).string());
+    if (!d.empty()) subroutine_dirs.push_back(fs::absolute(d).string());
+  }
+  std::random_device seed;
+  std::mt19937 random(seed());
+  std::vector<wire::Job> jobs;
+  std::map<std::string, std::string> output_of;  // job id -> file to write
+  std::set<std::string> output_names;
+  for (const Submission& s : list) {
+    wire::Job job;
+    job.job_id = single && !args.job_id.empty() ? args.job_id : new_job_id(s.program, random);
+    job.file_name = s.program;
+    job.program_text = read_text(s.program, "program file");
+    job.dialect = dialect_of(args.dialect);
+    job.tools = setup::read_tool_list(s.tools).tools();
+    job.stock = setup::read_stock(s.stock);
+    job.level = args.level == "cc2" ? wire::ConformanceClass::Cc2 : wire::ConformanceClass::Cc1;
+    job.output_name = single && !args.output.empty() ? fs::path(args.output).filename().string()
+                                                     : fs::path(s.program).stem().string() + ".stp";
+    if (!output_names.insert(job.output_name).second)
+      throw InputError({s.program, 0, 0}, "two programs would both be written as " + job.output_name);
+    job.subroutine_path = subroutine_dirs;
+    output_of[job.job_id] = !args.output.empty() ? args.output : (fs::path(args.output_dir) / job.output_name).string();
+    jobs.push_back(std::move(job));
   }
 
   bus::BusConfig config = bus::config_from_environment();
   if (args.domain) config.domain_id = *args.domain;
   bus::Participant participant(config);
-  service::JobWatch watch(participant, job.job_id);  // before publishing: nothing is missed
+  std::vector<std::string> ids;
+  for (const wire::Job& j : jobs) ids.push_back(j.job_id);
+  service::JobWatch watch(participant, ids);  // before publishing: nothing is missed
   bus::Writer programs(participant, bus::Topic::Programs);
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(args.timeout_s * 1000));
   if (!programs.wait_for_readers(1, std::min(timeout, std::chrono::milliseconds(10'000)))) {
@@ -104,57 +196,64 @@ int run_submit(const SubmitArguments& args) {
                  participant.domain_id());
     return 3;
   }
-  programs.write(job.job_id, "", 0, 0, true, wire::encode_job(job));
-  std::printf("%s\n", job.job_id.c_str());
+  for (const wire::Job& job : jobs) {
+    programs.write(job.job_id, "", 0, 0, true, wire::encode_job(job));
+    std::printf("%s\n", job.job_id.c_str());
+  }
   std::fflush(stdout);
+  jobs.clear();  // the writer holds them now
   if (!args.wait) {
-    // The job's only copy is this process's writer until an interpreter has it.
+    // A job's only copy is this process's writer until an interpreter has it.
     programs.wait_for_acks(timeout);
     return 0;
   }
   const bool tty = isatty(STDERR_FILENO) != 0;
-  const service::JobOutcome outcome = watch.wait(timeout, [&](const wire::JobStatus& s) {
-    if (s.state == wire::JobState::Progress && !tty) return;
+  int failed = 0;
+  const auto on_over = [&](const std::string& job_id, service::JobOutcome outcome) {
+    if (tty && single) std::fprintf(stderr, "\r\033[K");
+    if (outcome.error) {
+      print_error(*outcome.error);
+      ++failed;
+    } else {
+      step_writer::write_file_atomically(output_of.at(job_id), outcome.file->content);
+      if (!single) std::fprintf(stderr, "%s: done, %s\n", job_id.c_str(), output_of.at(job_id).c_str());
+    }
+    programs.unregister(job_id, "");
+  };
+  const auto on_status = [&](const wire::JobStatus& s) {
+    if (!single || (s.state == wire::JobState::Progress && !tty)) return;
     std::fprintf(stderr, "%s%s: %s", tty ? "\r\033[K" : "", s.stage.c_str(), state_name(s.state));
     if (s.state == wire::JobState::Progress) std::fprintf(stderr, " %3.0f%%", s.progress * 100);
     std::fprintf(stderr, "%s", tty ? "" : "\n");
-  });
-  if (tty) std::fprintf(stderr, "\r\033[K");
-  if (outcome.error) {
-    const wire::JobStatus& e = *outcome.error;
-    std::fprintf(stderr, "%s: error: %s (%s)\n", e.where.to_string().c_str(), e.message.c_str(), e.stage.c_str());
-    return 1;
-  }
-  if (!outcome.file) {
-    std::fprintf(stderr, "ncbridge submit: job %s not done after %.0f s\n", job.job_id.c_str(), args.timeout_s);
-    return 3;
-  }
-  step_writer::write_file_atomically(args.output, outcome.file->content);
-  programs.unregister(job.job_id, "");
-  return 0;
+  };
+  const std::set<std::string> late = watch.wait_all(timeout, on_over, on_status);
+  for (const std::string& id : late) std::fprintf(stderr, "ncbridge submit: job %s not done after %.0f s\n", id.c_str(), args.timeout_s);
+  if (!single) std::fprintf(stderr, "%zu jobs: %zu done, %d failed, %zu not done\n", ids.size(), ids.size() - failed - late.size(), failed, late.size());
+  if (!late.empty()) return 3;
+  return failed > 0 ? 1 : 0;
 }
 
 }  // namespace
 
 void add_submit_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<SubmitArguments>();
-  CLI::App* cmd = app.add_subcommand("submit", "Submit a part program to the running DDS services");
-  cmd->add_option("program", args->program, "Part program")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML)")->required()->check(CLI::ExistingFile);
+  CLI::App* cmd = app.add_subcommand("submit", "Submit part programs to the running DDS services");
+  cmd->add_option("programs", args->programs, "Part programs, or folders of them")->check(CLI::ExistingPath);
+  cmd->add_option("--list", args->list, "File of \"PROGRAM [TOOLS STOCK]\" lines to submit too")->check(CLI::ExistingFile);
+  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML)")->check(CLI::ExistingFile);
+  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML)")->check(CLI::ExistingFile);
   cmd->add_option("--dialect", args->dialect, "Program dialect")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));
   cmd->add_option("--level", args->level, "Conformance class asked for")->check(CLI::IsMember({"cc1", "cc2"}));
-  cmd->add_option("-o,--output", args->output, "Part 21 file to write (with --wait); its name is FILE_NAME.name");
-  cmd->add_option("--job-id", args->job_id, "Job id (default: program name + random suffix)");
+  cmd->add_option("-o,--output", args->output, "Part 21 file to write (one program, with --wait); its name is FILE_NAME.name");
+  cmd->add_option("--output-dir", args->output_dir, "Folder for the Part 21 files (with --wait), named PROGRAM-STEM.stp")
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--job-id", args->job_id, "Job id, one program only (default: program name + random suffix)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
   cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));
-  cmd->add_flag("--wait", args->wait, "Show progress and write the result");
+  cmd->add_flag("--wait", args->wait, "Show progress and write the results");
   cmd->add_option("--timeout", args->timeout_s, "Seconds to wait (default 600)");
-  cmd->callback([args, &exit_code]() {
-    if (args->wait && args->output.empty()) throw CLI::RequiredError("--output (with --wait)");
-    exit_code = run_submit(*args);
-  });
+  cmd->callback([args, &exit_code]() { exit_code = run_submit(*args); });
 }
 
 }  // namespace ncbridge::cli

@@ -1,9 +1,11 @@
 // ncbridge-cc1-builder: the cc1_builder stage as a DDS service. A job's canonical stream
-// (context, then batches: ncbridge/service/canonical_stream.hpp) becomes its CC1 model,
-// published whole on the workingsteps topic.
+// (context, then batches: ncbridge/service/canonical_stream.hpp) is fed to the builder batch by
+// batch as it arrives, while the interpreter is still at work; the finished CC1 model is
+// published on the workingsteps topic as a model stream (ncbridge/service/model_stream.hpp).
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include <memory>
 #include <string>
 
 #include "ncbridge/bus/topics.hpp"
@@ -11,44 +13,53 @@
 #include "ncbridge/cc1_builder/cc1_builder.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/service/canonical_stream.hpp"
+#include "ncbridge/service/model_stream.hpp"
 #include "ncbridge/service/service_options.hpp"
-#include "ncbridge/stepnc_codec/project_codec.hpp"
 #include "ncbridge/wire/job.hpp"
-#include "ncbridge/wire/workingsteps.hpp"
 
 namespace {
 
 using namespace ncbridge;
 
-void build(const service::JobInput& input, service::JobContext& context) {
-  if (input.kinds.front() != service::kJobContext)
-    throw InputError({"<canonical stream>", 0, 0}, "the stream does not start with the job's context");
-  const wire::Job job = wire::decode_job(input.payloads.front());
-  cc1_builder::Options options;
-  options.tools = setup::ToolList(job.tools);
-  options.stock = job.stock;
-  cc1_builder::Cc1Builder builder(options);
-  const double batches = static_cast<double>(input.payloads.size());
-  for (std::size_t i = 1; i < input.payloads.size(); ++i) {
-    if (input.kinds[i] != service::kCanonicalBatch)
-      throw InputError({"<canonical stream>", 0, 0}, "sample " + std::to_string(i) + " is not a canonical batch");
-    const canonical::DecodedBatch batch = canonical::decode_batch(input.payloads[i]);
-    if (batch.job_id != input.job_id)
-      throw InputError({"<canonical batch>", 0, 0}, "a batch of job \"" + batch.job_id + "\" in job \"" + input.job_id + "\"");
-    canonical::replay(batch, builder);
-    context.progress(static_cast<double>(i) / batches);
-  }
-  builder.end();
-  for (const auto& w : builder.warnings()) spdlog::warn("job {}: {}: {}", input.job_id, w.where.to_string(), w.message);
+class Cc1Stream final : public service::JobStream {
+ public:
+  explicit Cc1Stream(service::JobContext& context) : context_(context) {}
 
-  wire::StepncModel model;
-  model.job_id = input.job_id;
-  model.level = wire::ModelLevel::Cc1;
-  model.requested = job.level == wire::ConformanceClass::Cc2 ? wire::ModelLevel::Cc2 : wire::ModelLevel::Cc1;
-  model.output_name = job.output_name.empty() ? input.job_id + ".stp" : job.output_name;
-  model.model = stepnc_codec::encode_project(builder.take_project());
-  context.output().write(input.job_id, "", 0, 0, true, wire::encode_stepnc_model(model));
-}
+  void sample(bus::Envelope sample) override {
+    if (!builder_) {
+      if (sample.kind != service::kJobContext)
+        throw InputError({"<canonical stream>", 0, 0}, "the stream does not start with the job's context");
+      const wire::Job job = wire::decode_job(sample.payload);
+      cc1_builder::Options options;
+      options.tools = setup::ToolList(job.tools);
+      options.stock = job.stock;
+      builder_ = std::make_unique<cc1_builder::Cc1Builder>(options);
+      header_.requested = job.level == wire::ConformanceClass::Cc2 ? wire::ModelLevel::Cc2 : wire::ModelLevel::Cc1;
+      header_.output_name = job.output_name.empty() ? context_.job_id() + ".stp" : job.output_name;
+      return;
+    }
+    if (sample.kind != service::kCanonicalBatch)
+      throw InputError({"<canonical stream>", 0, 0}, "sample " + std::to_string(sample.seq) + " is not a canonical batch");
+    const canonical::DecodedBatch batch = canonical::decode_batch(sample.payload);
+    if (batch.job_id != context_.job_id())
+      throw InputError({"<canonical batch>", 0, 0},
+                       "a batch of job \"" + batch.job_id + "\" in job \"" + context_.job_id() + "\"");
+    canonical::replay(batch, *builder_);
+  }
+
+  void finish() override {
+    if (!builder_) throw InputError({"<canonical stream>", 0, 0}, "the stream has no job context");
+    builder_->end();
+    for (const auto& w : builder_->warnings())
+      spdlog::warn("job {}: {}: {}", context_.job_id(), w.where.to_string(), w.message);
+    service::publish_model(context_, header_, builder_->take_project());
+  }
+
+ private:
+  service::JobContext& context_;
+  std::unique_ptr<cc1_builder::Cc1Builder> builder_;
+  service::ModelHeader header_;
+};
 
 }  // namespace
 
@@ -61,7 +72,9 @@ int main(int argc, char** argv) {
     spec.stage = std::string(bus::kStageCc1Builder);
     spec.inputs = {{bus::Topic::Canonical, false}};
     spec.output = bus::Topic::Workingsteps;
-    spec.run = build;
+    spec.open = [](const service::JobKey&, service::JobContext& context) -> std::unique_ptr<service::JobStream> {
+      return std::make_unique<Cc1Stream>(context);
+    };
     return spec;
   });
 }

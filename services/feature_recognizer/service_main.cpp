@@ -1,11 +1,15 @@
 // ncbridge-feature-recognizer: the feature_recognizer stage as a DDS service, between the
-// workingsteps and features topics. A job that asks for CC2 gets its features recognised in
-// the CC1 model and the CC2 project built from them, with the same library calls as
-// `ncbridge convert --level cc2` (cli/src/cc2_output.cpp: the stock is the model's rawpiece);
-// a CC1 job's model passes through.
+// workingsteps and features topics (model streams: ncbridge/service/model_stream.hpp). A job
+// that asks for CC2 has its model decoded chunk by chunk as it arrives, then its features
+// recognised and the CC2 project built from them, with the same library calls as
+// `ncbridge convert --level cc2` (cli/src/cc2_output.cpp: the stock is the model's rawpiece).
+// A CC1 job's stream is passed on sample by sample as it comes, not decoded (the step writer
+// checks it).
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "ncbridge/bus/topics.hpp"
@@ -13,34 +17,47 @@
 #include "ncbridge/feature_recognizer/cc1_input.hpp"
 #include "ncbridge/feature_recognizer/recognizer.hpp"
 #include "ncbridge/feature_recognizer/to_stepnc.hpp"
+#include "ncbridge/service/model_stream.hpp"
 #include "ncbridge/service/service_options.hpp"
-#include "ncbridge/stepnc_codec/project_codec.hpp"
-#include "ncbridge/wire/workingsteps.hpp"
 
 namespace {
 
 using namespace ncbridge;
 
-void recognize(const service::JobInput& input, service::JobContext& context) {
-  const wire::StepncModel model = wire::decode_stepnc_model(input.payloads.back());
-  if (model.job_id != input.job_id)
-    throw InputError({"<stepnc model>", 0, 0}, "a model of job \"" + model.job_id + "\" in job \"" + input.job_id + "\"");
-  const stepnc::Project project = stepnc_codec::decode_project(model.model);  // rejects a bad model here
-  if (model.requested != wire::ModelLevel::Cc2) {
-    context.output().write(input.job_id, "", 0, 0, true, wire::encode_stepnc_model(model));
-    return;
+class RecognizerStream final : public service::JobStream {
+ public:
+  explicit RecognizerStream(service::JobContext& context) : context_(context), model_(context.job_id()) {}
+
+  void sample(bus::Envelope sample) override {
+    if (!pass_through_) {  // the shell: is this a CC2 job?
+      pass_through_ = service::ModelReceiver::read_header(context_.job_id(), sample).requested != wire::ModelLevel::Cc2;
+    }
+    if (*pass_through_) {
+      context_.publish(sample.subkey, sample.seq, sample.kind, sample.last, sample.payload);
+    } else {
+      model_.sample(sample);
+    }
   }
-  const auto stock = feature_recognizer::stock_from_cc1(project);
-  if (!stock) throw InputError({"<stepnc model>", 0, 0}, "CC2 needs the stock, and the job's model has no rawpiece");
-  const auto features = feature_recognizer::recognize(feature_recognizer::workingsteps_from_cc1(project), *stock);
-  auto cc2 = feature_recognizer::cc2_from_cc1(project, features);
-  for (const std::string& w : cc2.warnings) spdlog::warn("job {}: {}", input.job_id, w);
-  spdlog::info("job {}: {} features recognised", input.job_id, features.size());
-  wire::StepncModel out = model;
-  out.level = wire::ModelLevel::Cc2;
-  out.model = stepnc_codec::encode_project(cc2.project);
-  context.output().write(input.job_id, "", 0, 0, true, wire::encode_stepnc_model(out));
-}
+
+  void finish() override {
+    if (pass_through_.value_or(true)) return;
+    const stepnc::Project project = model_.take();
+    const auto stock = feature_recognizer::stock_from_cc1(project);
+    if (!stock) throw InputError({"<stepnc model>", 0, 0}, "CC2 needs the stock, and the job's model has no rawpiece");
+    const auto features = feature_recognizer::recognize(feature_recognizer::workingsteps_from_cc1(project), *stock);
+    const auto cc2 = feature_recognizer::cc2_from_cc1(project, features);
+    for (const std::string& w : cc2.warnings) spdlog::warn("job {}: {}", context_.job_id(), w);
+    spdlog::info("job {}: {} features recognised", context_.job_id(), features.size());
+    service::ModelHeader header = *model_.header();
+    header.level = wire::ModelLevel::Cc2;
+    service::publish_model(context_, header, cc2.project);
+  }
+
+ private:
+  service::JobContext& context_;
+  service::ModelReceiver model_;
+  std::optional<bool> pass_through_;
+};
 
 }  // namespace
 
@@ -54,7 +71,9 @@ int main(int argc, char** argv) {
     spec.stage = std::string(bus::kStageFeatureRecognizer);
     spec.inputs = {{bus::Topic::Workingsteps, false}};
     spec.output = bus::Topic::Features;
-    spec.run = recognize;
+    spec.open = [](const service::JobKey&, service::JobContext& context) -> std::unique_ptr<service::JobStream> {
+      return std::make_unique<RecognizerStream>(context);
+    };
     return spec;
   });
 }

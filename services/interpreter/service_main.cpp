@@ -98,14 +98,10 @@ void interpret(const wire::Job& job, service::JobContext& context) {
 
   wire::Job header = job;
   header.program_text.clear();
-  bus::Writer& out = context.output();
-  out.write(job.job_id, "", 0, service::kJobContext, false, wire::encode_job(header));
+  context.publish("", 0, service::kJobContext, false, wire::encode_job(header));
 
-  bus::CanonicalBatcher batcher(job.job_id, 1024, [&out](const bus::Envelope& batch) {
-    bus::Envelope e = batch;
-    e.seq += 1;  // after the context
-    e.kind = service::kCanonicalBatch;
-    out.write(e);
+  bus::CanonicalBatcher batcher(job.job_id, 1024, [&context](const bus::Envelope& batch) {
+    context.publish("", batch.seq + 1, service::kCanonicalBatch, batch.last, batch.payload);  // after the context
   });
   ProgressSink sink(batcher, context, job.program_text);
   interpreter::interpret_text(job.program_text, job.file_name, options, sink);

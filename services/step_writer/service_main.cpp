@@ -1,20 +1,22 @@
-// ncbridge-step-writer: the step_writer stage as a DDS service. A job's model from the features
-// topic is written as a Part 21 file, with the same library calls (and so the same bytes) as
+// ncbridge-step-writer: the step_writer stage as a DDS service. A job's model stream from the
+// features topic (ncbridge/service/model_stream.hpp) is decoded chunk by chunk as it arrives,
+// then written as a Part 21 file with the same library calls (and so the same bytes) as
 // `ncbridge convert`: into --output-dir (atomically), and onto the part21 topic with its digest.
+// Results stay on the part21 topic for late readers within the retention policy (--retain-*).
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "ncbridge/bus/topics.hpp"
 #include "ncbridge/common/error.hpp"
+#include "ncbridge/service/model_stream.hpp"
 #include "ncbridge/service/service_options.hpp"
 #include "ncbridge/service/sha256.hpp"
 #include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
-#include "ncbridge/stepnc_codec/project_codec.hpp"
 #include "ncbridge/wire/part21.hpp"
-#include "ncbridge/wire/workingsteps.hpp"
 
 namespace {
 
@@ -28,25 +30,37 @@ void check_output_name(const std::string& name) {
     throw InputError({"<stepnc model>", 0, 0}, "output name \"" + name + "\" is not a plain file name");
 }
 
-void write(const service::JobInput& input, service::JobContext& context, const std::filesystem::path& output_dir) {
-  const wire::StepncModel model = wire::decode_stepnc_model(input.payloads.back());
-  if (model.job_id != input.job_id)
-    throw InputError({"<stepnc model>", 0, 0}, "a model of job \"" + model.job_id + "\" in job \"" + input.job_id + "\"");
-  check_output_name(model.output_name);
-  const stepnc::Project project = stepnc_codec::decode_project(model.model);
-  step_writer::StepncWriteOptions options;
-  options.file_name = model.output_name;
-  if (model.level == wire::ModelLevel::Cc2) options.description = {"ISO 14649 CC2 program written by ncbridge"};  // as convert
-  wire::Part21File file;
-  file.job_id = input.job_id;
-  file.level = model.level == wire::ModelLevel::Cc2 ? wire::Part21Level::Cc2 : wire::Part21Level::Cc1;
-  file.file_name = model.output_name;
-  file.content = step_writer::write_stepnc(project, options);
-  file.sha256 = service::sha256(file.content);
-  if (!output_dir.empty()) step_writer::write_file_atomically(output_dir / file.file_name, file.content);
-  context.output().write(input.job_id, file.level == wire::Part21Level::Cc2 ? "cc2" : "cc1", 0, 0, true,
-                         wire::encode_part21(file));
-}
+class WriterStream final : public service::JobStream {
+ public:
+  WriterStream(service::JobContext& context, const std::filesystem::path& output_dir)
+      : context_(context), output_dir_(output_dir), model_(context.job_id()) {}
+
+  void sample(bus::Envelope sample) override {
+    model_.sample(sample);
+    if (model_.header() && sample.seq == 0) check_output_name(model_.header()->output_name);
+  }
+
+  void finish() override {
+    const service::ModelHeader& header = *model_.header();
+    const stepnc::Project project = model_.take();
+    step_writer::StepncWriteOptions options;
+    options.file_name = header.output_name;
+    if (header.level == wire::ModelLevel::Cc2) options.description = {"ISO 14649 CC2 program written by ncbridge"};  // as convert
+    wire::Part21File file;
+    file.job_id = context_.job_id();
+    file.level = header.level == wire::ModelLevel::Cc2 ? wire::Part21Level::Cc2 : wire::Part21Level::Cc1;
+    file.file_name = header.output_name;
+    file.content = step_writer::write_stepnc(project, options);
+    file.sha256 = service::sha256(file.content);
+    if (!output_dir_.empty()) step_writer::write_file_atomically(output_dir_ / file.file_name, file.content);
+    context_.publish(file.level == wire::Part21Level::Cc2 ? "cc2" : "cc1", 0, 0, true, wire::encode_part21(file));
+  }
+
+ private:
+  service::JobContext& context_;
+  const std::filesystem::path& output_dir_;
+  service::ModelReceiver model_;
+};
 
 }  // namespace
 
@@ -63,9 +77,8 @@ int main(int argc, char** argv) {
     spec.inputs = {{bus::Topic::Features, false}};
     spec.output = bus::Topic::Part21;
     spec.unregister_output_when_over = false;  // the result stays for `submit --wait` and late readers
-    spec.run = [dir = std::filesystem::path(output_dir)](const service::JobInput& input, service::JobContext& context) {
-      write(input, context, dir);
-    };
+    spec.open = [dir = std::filesystem::path(output_dir)](const service::JobKey&, service::JobContext& context)
+        -> std::unique_ptr<service::JobStream> { return std::make_unique<WriterStream>(context, dir); };
     return spec;
   });
 }

@@ -18,6 +18,16 @@ void add_service_options(CLI::App& app, ServiceOptions& options) {
   app.add_option("--cyclonedds-uri", options.bus.cyclonedds_uri,
                  "Cyclone DDS configuration, file:///... (default: CYCLONEDDS_URI)");
   app.add_option("--worker-id", options.runner.worker_id, "Worker id on the workers topic (default: host/pid)");
+  app.add_option("--retain-jobs", options.runner.retention.max_jobs,
+                 "Jobs over whose statuses and results stay on the bus (default 1000; the oldest leave first)");
+  app.add_option_function<double>(
+         "--retain-for", [&options](double s) { options.runner.retention.max_age = std::chrono::seconds(static_cast<long long>(s)); },
+         "Seconds a job's statuses and results stay on the bus after it is over (default 3600)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option_function<double>(
+         "--retain-mb", [&options](double mb) { options.runner.retention.max_result_bytes = static_cast<std::uint64_t>(mb * 1048576.0); },
+         "Megabytes of final results (Part 21 files) kept on the bus (default 1024)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--log-level", options.log_level, "trace, debug, info, warn, error")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}));
 }

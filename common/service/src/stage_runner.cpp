@@ -3,10 +3,12 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <set>
+#include <deque>
+#include <map>
 #include <utility>
 
 #include "ncbridge/bus/reader.hpp"
+#include "ncbridge/bus/wait_set.hpp"
 #include "ncbridge/bus/worker_directory.hpp"
 #include "ncbridge/bus/worker_presence.hpp"
 #include "ncbridge/common/error.hpp"
@@ -24,6 +26,27 @@ wire::WorkerInfo worker_info(const std::string& stage, const std::string& worker
   return info;
 }
 
+// A whole-input stage as a stream: collects the samples, runs the stage after the last.
+class CollectingStream final : public JobStream {
+ public:
+  CollectingStream(const JobKey& key, JobContext& context, const std::function<void(const JobInput&, JobContext&)>& run)
+      : context_(context), run_(run) {
+    input_.topic = key.topic;
+    input_.job_id = key.job_id;
+    input_.subkey = key.subkey;
+  }
+  void sample(bus::Envelope sample) override {
+    input_.payloads.push_back(std::move(sample.payload));
+    input_.kinds.push_back(sample.kind);
+  }
+  void finish() override { run_(input_, context_); }
+
+ private:
+  JobInput input_;
+  JobContext& context_;
+  const std::function<void(const JobInput&, JobContext&)>& run_;
+};
+
 }  // namespace
 
 struct StageRunner::State {
@@ -34,9 +57,28 @@ struct StageRunner::State {
         directory(participant),
         status_reader(participant, bus::Topic::Status),
         status_writer(participant, bus::Topic::Status),
-        output(participant, spec.output) {
+        output(participant, spec.output),
+        wait_set(participant) {
     for (const InputTopic& in : spec.inputs) inputs.emplace_back(in, bus::Reader(participant, in.topic));
+    for (const auto& [in, reader] : inputs) wait_set.attach(reader);
+    wait_set.attach(status_reader);
+    wait_set.attach(directory.reader());
   }
+
+  // A job this worker works on.
+  struct Active {
+    std::unique_ptr<JobContext> context;
+    std::unique_ptr<JobStream> stream;
+    Clock::time_point start;
+    Clock::time_point last_progress;
+  };
+  // A job over whose statuses (and final results) stay on the bus for a while.
+  struct Kept {
+    std::string job_id;
+    std::set<std::string> output_subkeys;  // final results; empty for an intermediate stage
+    std::uint64_t bytes = 0;
+    Clock::time_point over;
+  };
 
   const std::string& me() const { return presence.info().worker_id; }
 
@@ -46,6 +88,7 @@ struct StageRunner::State {
     const std::string subkey = status.job_id.empty() ? spec.stage + "/" + me() : spec.stage;
     status_writer.write(status.job_id, subkey, status_seq++, static_cast<std::uint32_t>(status.state), false,
                         wire::encode_status(status));
+    if (!status.job_id.empty()) with_status.insert(status.job_id);
   }
 
   void health(const std::string& message) {
@@ -55,21 +98,23 @@ struct StageRunner::State {
     publish_status(std::move(s));
   }
 
-  void take_inputs(std::chrono::milliseconds first_wait) {
-    bool first = true;
+  void take_inputs() {
     for (auto& [in, reader] : inputs) {
-      for (const bus::Received& r : reader.take(first ? first_wait : std::chrono::milliseconds(0))) {
-        if (!r.has_data) continue;
-        const std::string job_id =
-            in.job_id_includes_subkey ? r.envelope.key + "/" + r.envelope.subkey : r.envelope.key;
-        if (assembler.add(in.topic, job_id, r.envelope)) spdlog::debug("job {}: input complete", job_id);
+      for (;;) {
+        const std::vector<bus::Received> got = reader.take(std::chrono::milliseconds(0));
+        for (const bus::Received& r : got) {
+          if (!r.has_data) continue;
+          const std::string job_id =
+              in.job_id_includes_subkey ? r.envelope.key + "/" + r.envelope.subkey : r.envelope.key;
+          assembler.add(in.topic, job_id, r.envelope);
+        }
+        if (got.size() < 256) break;
       }
-      first = false;
     }
   }
 
   void take_statuses() {
-    for (const bus::Received& r : status_reader.take(std::chrono::milliseconds(0))) {
+    for (const bus::Received& r : status_reader.take(std::chrono::milliseconds(0), 4096)) {
       if (!r.has_data || r.envelope.key.empty()) continue;
       wire::JobStatus s;
       try {
@@ -87,63 +132,169 @@ struct StageRunner::State {
   void job_over(const std::string& job_id) {
     if (assembler.finished(job_id)) return;
     assembler.finish(job_id);
-    if (published.erase(job_id) != 0 && spec.unregister_output_when_over) {
-      try {
-        output.unregister(job_id, "");
-      } catch (const std::exception& e) {
-        spdlog::warn("job {}: cannot unregister its output: {}", job_id, e.what());
+    if (active.contains(job_id)) {
+      spdlog::info("job {}: over elsewhere, stopped here", job_id);
+      remember_published(job_id);
+      announce_jobs();
+    }
+    started.erase(job_id);
+    Kept kept{job_id, {}, 0, Clock::now()};
+    if (const auto p = published.find(job_id); p != published.end()) {
+      if (spec.unregister_output_when_over) {
+        for (const std::string& subkey : p->second.first) unregister(output, job_id, subkey);
+      } else {
+        kept.output_subkeys = std::move(p->second.first);
+        kept.bytes = p->second.second;
       }
+      published.erase(p);
+    }
+    if (with_status.erase(job_id) != 0 || !kept.output_subkeys.empty()) {
+      kept_bytes += kept.bytes;
+      kept_jobs.push_back(std::move(kept));
     }
   }
 
-  void run_owned_jobs() {
-    for (const std::string& job_id : assembler.complete_jobs()) {
-      if (ran.contains(job_id) || !directory.tracker().owns(spec.stage, me(), job_id)) continue;
-      if (const JobInput* input = assembler.complete(job_id)) run_job(*input);
+  static void unregister(bus::Writer& writer, const std::string& key, const std::string& subkey) {
+    try {
+      writer.unregister(key, subkey);
+    } catch (const std::exception& e) {
+      spdlog::warn("job {}: cannot unregister its {} sample: {}", key, subkey, e.what());
     }
   }
 
-  void run_job(const JobInput& input) {
-    const std::string job_id = input.job_id;  // input is dropped if the job ends in here
-    const auto start = Clock::now();
-    ran.insert(job_id);
-    published.insert(job_id);
-    presence.update_jobs({job_id});
-    wire::JobStatus running;
-    running.job_id = job_id;
-    running.state = wire::JobState::Running;
-    publish_status(running);
-    Clock::time_point last_progress = start;
-    JobContext context(&output, [&](double fraction) {
+  // The retention policy: the oldest jobs over leave the bus first.
+  void evict_kept() {
+    const Retention& r = options.retention;
+    const auto now = Clock::now();
+    while (!kept_jobs.empty() &&
+           (kept_jobs.size() > r.max_jobs || now - kept_jobs.front().over > r.max_age || kept_bytes > r.max_result_bytes)) {
+      Kept& k = kept_jobs.front();
+      for (const std::string& subkey : k.output_subkeys) unregister(output, k.job_id, subkey);
+      unregister(status_writer, k.job_id, spec.stage);
+      kept_bytes -= k.bytes;
+      kept_jobs.pop_front();
+    }
+  }
+
+  void announce_jobs() {
+    std::vector<std::string> ids;
+    ids.reserve(active.size());
+    for (const auto& [id, a] : active) ids.push_back(id);
+    presence.update_jobs(std::move(ids));
+  }
+
+  bool can_start(const std::string& job_id) const {
+    if (started.contains(job_id)) return false;
+    // A whole-input stage takes a job once all of it is here; a streaming one at its first sample.
+    if (spec.open ? !assembler.ready(job_id) : !assembler.complete(job_id)) return false;
+    return directory.tracker().owns(spec.stage, me(), job_id);
+  }
+
+  void start_owned_jobs() {
+    bool changed = false;
+    for (const std::string& job_id : assembler.jobs()) {
+      if (!can_start(job_id)) continue;
+      start(job_id);
+      changed = true;
+    }
+    if (changed) announce_jobs();
+  }
+
+  void start(const std::string& job_id) {
+    started.insert(job_id);
+    const JobKey key = *assembler.key(job_id);
+    Active a;
+    a.start = a.last_progress = Clock::now();
+    Active* slot = nullptr;
+    auto progress = [this, job_id](double fraction) {
+      const auto it = active.find(job_id);
+      if (it == active.end()) return;
       const auto now = Clock::now();
-      if (now - last_progress < std::chrono::milliseconds(200)) return;
-      last_progress = now;
+      if (now - it->second.last_progress < std::chrono::milliseconds(200)) return;
+      it->second.last_progress = now;
       wire::JobStatus p;
       p.job_id = job_id;
       p.state = wire::JobState::Progress;
       p.progress = fraction;
       publish_status(std::move(p));
-    }, me());
-    wire::JobStatus end;
+    };
+    a.context = std::make_unique<JobContext>(output, job_id, progress);
+    slot = &active.emplace(job_id, std::move(a)).first->second;
+    wire::JobStatus running;
+    running.job_id = job_id;
+    running.state = wire::JobState::Running;
+    publish_status(running);
+    attempt(job_id, [&] {
+      slot->stream = spec.open ? spec.open(key, *slot->context)
+                               : std::make_unique<CollectingStream>(key, *slot->context, spec.run);
+    });
+  }
+
+  // Feeds every active job what has come for it; finishes those whose last sample came.
+  void feed_active() {
+    std::vector<std::string> ids;
+    for (const auto& [id, a] : active) ids.push_back(id);
+    for (const std::string& job_id : ids) {
+      const auto it = active.find(job_id);
+      if (it == active.end() || !it->second.stream) continue;
+      JobStream& stream = *it->second.stream;
+      std::vector<bus::Envelope> samples = assembler.take_ready(job_id);
+      if (!attempt(job_id, [&] {
+            for (bus::Envelope& s : samples) stream.sample(std::move(s));
+          }))
+        continue;
+      if (assembler.taken_all(job_id) && attempt(job_id, [&] { stream.finish(); })) done(job_id);
+    }
+  }
+
+  // Runs part of a job's work; an exception ends the job with an ERROR status (false).
+  template <class Work>
+  bool attempt(const std::string& job_id, Work&& work) {
     try {
-      spec.run(input, context);
-      end.job_id = job_id;
-      end.state = wire::JobState::Done;
-      end.progress = 1;
-      spdlog::info("job {}: done in {:.1f} ms", job_id,
-                   std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+      work();
+      return true;
     } catch (const InputError& e) {
-      end = wire::error_status(job_id, spec.stage, me(), e);
       spdlog::warn("job {}: {}", job_id, e.what());
+      fail(job_id, wire::error_status(job_id, spec.stage, me(), e));
     } catch (const std::exception& e) {
+      spdlog::error("job {}: {}", job_id, e.what());
+      wire::JobStatus end;
       end.job_id = job_id;
       end.state = wire::JobState::Error;
       end.message = e.what();
-      spdlog::error("job {}: {}", job_id, e.what());
+      fail(job_id, std::move(end));
     }
+    return false;
+  }
+
+  void fail(const std::string& job_id, wire::JobStatus status) {
+    remember_published(job_id);
+    publish_status(std::move(status));
+    job_over(job_id);
+  }
+
+  void done(const std::string& job_id) {
+    const auto it = active.find(job_id);
+    spdlog::info("job {}: done in {:.1f} ms", job_id,
+                 std::chrono::duration<double, std::milli>(Clock::now() - it->second.start).count());
+    remember_published(job_id);
+    wire::JobStatus end;
+    end.job_id = job_id;
+    end.state = wire::JobState::Done;
+    end.progress = 1;
     publish_status(end);
-    presence.update_jobs({});
-    if (end.state == wire::JobState::Error) job_over(job_id);
+    active.erase(job_id);
+    announce_jobs();
+  }
+
+  void remember_published(const std::string& job_id) {
+    const auto it = active.find(job_id);
+    if (it == active.end()) return;
+    auto& [subkeys, bytes] = published[job_id];
+    const JobContext& c = *it->second.context;
+    subkeys.insert(c.published_subkeys().begin(), c.published_subkeys().end());
+    bytes += c.published_bytes();
+    active.erase(it);
   }
 
   StageSpec spec;
@@ -154,9 +305,15 @@ struct StageRunner::State {
   bus::Writer status_writer;
   bus::Writer output;
   std::vector<std::pair<InputTopic, bus::Reader>> inputs;
+  bus::WaitSet wait_set;  // declared after the readers: detached before they go
   JobAssembler assembler;
-  std::set<std::string, std::less<>> ran;        // jobs this worker ran (never twice)
-  std::set<std::string, std::less<>> published;  // jobs with an output instance to unregister
+  std::map<std::string, Active, std::less<>> active;
+  std::set<std::string, std::less<>> started;       // jobs this worker started (never twice)
+  // Jobs this worker published output for, with the subkeys and bytes, until they are over.
+  std::map<std::string, std::pair<std::set<std::string>, std::uint64_t>, std::less<>> published;
+  std::set<std::string, std::less<>> with_status;   // jobs this worker published a status of
+  std::deque<Kept> kept_jobs;
+  std::uint64_t kept_bytes = 0;
   std::uint64_t status_seq = 0;
 };
 
@@ -174,7 +331,8 @@ int StageRunner::run(ShutdownSignal& shutdown) {
   const auto started = Clock::now();
   bool settled = false;
   while (!shutdown.requested()) {
-    s.take_inputs(s.options.poll);
+    s.wait_set.wait(settled ? s.options.idle : std::chrono::milliseconds(20));
+    s.take_inputs();
     s.take_statuses();
     s.directory.poll(std::chrono::milliseconds(0));
     if (!settled) {
@@ -185,7 +343,9 @@ int StageRunner::run(ShutdownSignal& shutdown) {
       if (!settled) continue;
       spdlog::info("{} worker {}: {} live worker(s) of the stage", s.spec.stage, s.me(), live.size());
     }
-    s.run_owned_jobs();
+    s.start_owned_jobs();
+    s.feed_active();
+    s.evict_kept();
   }
   spdlog::info("{} worker {}: stopping", s.spec.stage, s.me());
   wire::JobStatus stopped;

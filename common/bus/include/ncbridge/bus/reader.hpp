@@ -29,6 +29,8 @@ class Reader {
   bool wait_for_writers(std::uint32_t count, std::chrono::milliseconds timeout) const;
 
   Topic topic() const { return topic_; }
+  // The read condition (any sample state), for a bus::WaitSet.
+  std::int32_t read_condition() const { return condition_; }
 
  private:
   std::size_t take_now(std::vector<Received>& out, std::size_t max);

@@ -20,6 +20,7 @@ class WorkerDirectory {
   bool poll(std::chrono::milliseconds timeout);
 
   const WorkerTracker& tracker() const { return tracker_; }
+  const Reader& reader() const { return reader_; }  // to wait on it with others (bus::WaitSet)
   std::optional<std::string> owner(std::string_view stage, std::string_view job_id) const {
     return tracker_.owner(stage, job_id);
   }

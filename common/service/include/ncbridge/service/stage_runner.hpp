@@ -1,23 +1,30 @@
 #pragma once
 // The job loop every service runs around its stage library:
-//  - reads the stage's input topics; a job's samples are assembled and de-duplicated
-//    (JobAssembler) by EVERY worker of the stage, owner or not, so a survivor can redo a dead
-//    worker's job from what it already holds;
-//  - runs a complete job when rendezvous hashing over the live workers of the stage (workers
-//    topic + DDS liveliness) ranks this worker first, and again whenever the membership changes;
+//  - reads the stage's input topics; a job's samples are de-duplicated and kept (JobAssembler)
+//    by EVERY worker of the stage, owner or not, so a survivor can redo a dead worker's job
+//    from what it already holds;
+//  - a streaming stage (StageSpec::open) starts a job as soon as its first sample is there and
+//    rendezvous hashing over the live workers of the stage (workers topic + DDS liveliness)
+//    ranks this worker first, and gets the samples in seq order as they arrive; a whole-input
+//    stage (StageSpec::run) gets the job once all of it is there. Ownership is checked again
+//    at every membership change, so a survivor takes over a dead worker's jobs;
 //  - publishes RUNNING, PROGRESS, DONE or ERROR (with the source location of an InputError) on
 //    the status topic, and goes on with the next job after an error;
 //  - reads the status topic: a job is over when the step_writer reports it DONE or any stage
-//    reports an ERROR; its input is dropped and this stage's output instance of it unregistered
-//    (which frees the writer's durable copy).
+//    reports an ERROR; its input is dropped, work on it stops, and this stage's output
+//    instances of it are unregistered (which frees the writer's durable copy) — at once for an
+//    intermediate stage, after the retention policy for final results (part21) and statuses;
 //  - announces the worker (WorkerPresence), and its health as status samples with an empty job
 //    id (subkey "<stage>/<worker_id>"): "ready" at start, "stopped" on a clean exit.
+// The loop sleeps on one wait set over all its readers: no polling while idle.
 #include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ncbridge/bus/participant.hpp"
@@ -35,36 +42,78 @@ struct InputTopic {
   bool job_id_includes_subkey = false;
 };
 
-// What a stage's run function gets besides its input.
+// A whole job's input, for stages that need all of it (StageSpec::run).
+struct JobInput {
+  bus::Topic topic = bus::Topic::Programs;
+  std::string job_id;
+  std::string subkey;
+  std::vector<std::string> payloads;   // in seq order, one per sample
+  std::vector<std::uint32_t> kinds;    // the envelopes' kind, beside each payload
+};
+
+// What a stage's work on one job gets besides its input.
 class JobContext {
  public:
-  JobContext(bus::Writer* output, std::function<void(double)> progress, const std::string& worker_id)
-      : output_(output), progress_(std::move(progress)), worker_id_(worker_id) {}
-  bus::Writer& output() { return *output_; }   // the stage's output topic
+  using Progress = std::function<void(double)>;
+  JobContext(bus::Writer& output, std::string job_id, Progress progress)
+      : output_(output), job_id_(std::move(job_id)), progress_(std::move(progress)) {}
+
+  // Publishes one sample of this job on the stage's output topic (key = the job id).
+  void publish(std::string_view subkey, std::uint64_t seq, std::uint32_t kind, bool last, std::string_view payload) {
+    output_.write(job_id_, subkey, seq, kind, last, payload);
+    subkeys_.emplace(subkey);
+    bytes_ += payload.size();
+  }
   void progress(double fraction) { progress_(fraction); }  // 0..1; rate-limited by the runner
-  const std::string& worker_id() const { return worker_id_; }
+  const std::string& job_id() const { return job_id_; }
+
+  const std::set<std::string>& published_subkeys() const { return subkeys_; }
+  std::uint64_t published_bytes() const { return bytes_; }
 
  private:
-  bus::Writer* output_;
-  std::function<void(double)> progress_;
-  const std::string& worker_id_;
+  bus::Writer& output_;
+  std::string job_id_;
+  Progress progress_;
+  std::set<std::string> subkeys_;
+  std::uint64_t bytes_ = 0;
+};
+
+// A streaming stage's work on one job: the job's samples one by one in seq order (each once,
+// duplicates dropped), then finish() after the one marked last. Throw InputError for bad input.
+class JobStream {
+ public:
+  virtual ~JobStream() = default;
+  virtual void sample(bus::Envelope sample) = 0;
+  virtual void finish() = 0;
 };
 
 struct StageSpec {
   std::string stage;                  // bus::kStage*
   std::vector<InputTopic> inputs;
-  bus::Topic output;                  // where run() publishes
-  bool unregister_output_when_over = true;  // false for final results (part21)
-  // Runs one complete job. Throws InputError for bad input (program, payload); anything
-  // else thrown is reported as an error of the job too.
+  bus::Topic output;                  // where the stage publishes
+  bool unregister_output_when_over = true;  // false for final results (part21): kept by retention
+  // One of the two. run: gets a complete job. open: starts a job from its first sample (the
+  // context outlives the stream). Both throw InputError for bad input (program, payload);
+  // anything else thrown is reported as an error of the job too.
   std::function<void(const JobInput&, JobContext&)> run;
+  std::function<std::unique_ptr<JobStream>(const JobKey&, JobContext&)> open;
+};
+
+// How long a job's statuses and final results stay on the bus (durable) after it is over. The
+// oldest go first (unregistered) once any bound is passed.
+struct Retention {
+  std::size_t max_jobs = 1000;
+  std::chrono::seconds max_age{3600};
+  std::uint64_t max_result_bytes = std::uint64_t{1} << 30;  // final results only
 };
 
 struct RunnerOptions {
   std::string worker_id;   // empty: host/pid
-  std::chrono::milliseconds poll{20};
+  // Longest sleep while nothing comes (then the loop checks retention and membership).
+  std::chrono::milliseconds idle{200};
   // After start, how long to listen for the other workers of the stage before taking jobs.
   std::chrono::milliseconds settle{300};
+  Retention retention;
 };
 
 class StageRunner {

@@ -1,0 +1,56 @@
+#include "ncbridge/service/model_stream.hpp"
+
+#include "ncbridge/common/error.hpp"
+
+namespace ncbridge::service {
+namespace {
+
+wire::StepncModel decode_part(const std::string& job_id, const bus::Envelope& sample, std::uint32_t kind) {
+  if (sample.kind != kind)
+    throw InputError({"<stepnc model>", 0, 0}, "sample " + std::to_string(sample.seq) + " of job \"" + job_id + "\" is not a model " +
+                                                   (kind == kModelShell ? "shell" : "chunk"));
+  wire::StepncModel m = wire::decode_stepnc_model(sample.payload);
+  if (m.job_id != job_id)
+    throw InputError({"<stepnc model>", 0, 0}, "a model of job \"" + m.job_id + "\" in job \"" + job_id + "\"");
+  if (m.seq != sample.seq)
+    throw InputError({"<stepnc model>", 0, 0}, "model part " + std::to_string(m.seq) + " in sample " + std::to_string(sample.seq));
+  return m;
+}
+
+}  // namespace
+
+void publish_model(JobContext& context, const ModelHeader& header, const stepnc::Project& project) {
+  const stepnc_codec::ProjectParts parts = stepnc_codec::split_project(project, kModelChunkBytes);
+  wire::StepncModel m;
+  m.job_id = context.job_id();
+  m.level = header.level;
+  m.requested = header.requested;
+  m.output_name = header.output_name;
+  m.seq = 0;
+  m.last = false;
+  m.model = parts.shell;
+  context.publish("", 0, kModelShell, false, wire::encode_stepnc_model(m));
+  for (std::size_t i = 0; i < parts.chunks.size(); ++i) {
+    m.seq = i + 1;
+    m.last = i + 1 == parts.chunks.size();
+    m.model = parts.chunks[i];
+    context.publish("", m.seq, kModelChunk, m.last, wire::encode_stepnc_model(m));
+  }
+}
+
+ModelHeader ModelReceiver::read_header(const std::string& job_id, const bus::Envelope& shell) {
+  const wire::StepncModel m = decode_part(job_id, shell, kModelShell);
+  return {m.level, m.requested, m.output_name};
+}
+
+void ModelReceiver::sample(const bus::Envelope& sample) {
+  if (!header_) {
+    const wire::StepncModel m = decode_part(job_id_, sample, kModelShell);
+    joiner_.shell(m.model);
+    header_ = ModelHeader{m.level, m.requested, m.output_name};
+    return;
+  }
+  joiner_.chunk(decode_part(job_id_, sample, kModelChunk).model);
+}
+
+}  // namespace ncbridge::service

@@ -1,0 +1,114 @@
+// A model split into a shell and chunks (the workingsteps/features topics) joins back into an
+// equal project that writes the same Part 21 file: on corpus programs (CC1 and CC2) with chunks
+// small enough to make many, and on a project of every feature and operation type. Bad parts
+// (out of order, truncated, an element naming what has not come) are InputErrors.
+#include <gtest/gtest.h>
+
+#include "ncbridge/cc1_builder/cc1_builder.hpp"
+#include "ncbridge/common/error.hpp"
+#include "ncbridge/feature_recognizer/cc1_input.hpp"
+#include "ncbridge/feature_recognizer/recognizer.hpp"
+#include "ncbridge/feature_recognizer/to_stepnc.hpp"
+#include "ncbridge/interpreter/interpreter.hpp"
+#include "ncbridge/setup/stock.hpp"
+#include "ncbridge/setup/tool_list.hpp"
+#include "ncbridge/step_writer/stepnc_file.hpp"
+#include "ncbridge/stepnc_codec/project_stream.hpp"
+
+namespace ncbridge {
+namespace {
+
+stepnc::Project cc1(const std::string& dir, const std::string& program) {
+  cc1_builder::Options options;
+  options.tools = setup::read_tool_list(dir + "tools.json");
+  options.stock = setup::read_stock(dir + "stock.json");
+  interpreter::Options interp;
+  interp.tools = options.tools;
+  cc1_builder::Cc1Builder builder(options);
+  interpreter::interpret_file(dir + program, interp, builder);
+  return builder.take_project();
+}
+
+stepnc::Project cc2(const stepnc::Project& project) {
+  const auto stock = feature_recognizer::stock_from_cc1(project);
+  const auto features = feature_recognizer::recognize(feature_recognizer::workingsteps_from_cc1(project), *stock);
+  return feature_recognizer::cc2_from_cc1(project, features).project;
+}
+
+std::string written(const stepnc::Project& p) {
+  step_writer::StepncWriteOptions o;
+  o.file_name = "x.stp";
+  o.unix_time = 0;
+  return step_writer::write_stepnc(p, o);
+}
+
+stepnc::Project joined(const stepnc_codec::ProjectParts& parts) {
+  stepnc_codec::ProjectJoiner joiner;
+  joiner.shell(parts.shell);
+  for (const std::string& c : parts.chunks) joiner.chunk(c);
+  return joiner.take();
+}
+
+const std::string kShared = NCBRIDGE_SHARED_DIR;
+
+TEST(ProjectStream, CorpusModelsJoinBackToTheSameFile) {
+  std::vector<std::pair<std::string, std::string>> programs{{kShared + "/corpus/paper/", "face_mill.ngc"},
+                                                            {kShared + "/corpus/paper/", "test_part.ngc"},
+                                                            {kShared + "/corpus/cam/p01_block_reference/", "part.nc"}};
+  for (const auto& [dir, program] : programs) {
+    const stepnc::Project one = cc1(dir, program);
+    for (const stepnc::Project& p : {one, cc2(one)}) {
+      for (std::size_t chunk_bytes : {std::size_t{1}, std::size_t{4096}, std::size_t{1} << 20}) {
+        const auto parts = stepnc_codec::split_project(p, chunk_bytes);
+        if (chunk_bytes == 1) EXPECT_EQ(parts.chunks.size(), p.main_workplan.its_elements.size()) << program;
+        const stepnc::Project back = joined(parts);
+        EXPECT_EQ(back, p) << program << " chunks of " << chunk_bytes;
+        EXPECT_EQ(written(back), written(p)) << program;
+      }
+    }
+  }
+}
+
+TEST(ProjectStream, EachChunkNamesOnlyWhatCameBeforeOrWithIt) {
+  const stepnc::Project p = cc2(cc1(kShared + "/corpus/paper/", "test_part.ngc"));
+  const auto parts = stepnc_codec::split_project(p, 1);
+  stepnc_codec::ProjectJoiner joiner;
+  joiner.shell(parts.shell);
+  for (const std::string& c : parts.chunks) {
+    ASSERT_NO_THROW(joiner.chunk(c));  // the joiner checks every reference of the chunk
+  }
+  EXPECT_EQ(joiner.elements(), p.main_workplan.its_elements.size());
+}
+
+TEST(ProjectStream, BadPartsAreInputErrors) {
+  const stepnc::Project p = cc1(kShared + "/corpus/paper/", "face_mill.ngc");
+  const auto parts = stepnc_codec::split_project(p, 1);
+  ASSERT_GE(parts.chunks.size(), 2u);
+  {
+    stepnc_codec::ProjectJoiner joiner;
+    EXPECT_THROW(joiner.chunk(parts.chunks[0]), InputError);  // before the shell
+    EXPECT_THROW(joiner.shell(parts.chunks[0]), InputError);  // a chunk is no shell
+  }
+  {
+    stepnc_codec::ProjectJoiner joiner;
+    joiner.shell(parts.shell);
+    EXPECT_THROW(joiner.chunk(parts.shell), InputError);
+    const std::string& c = parts.chunks[0];
+    for (std::size_t n = 0; n < c.size(); n += 1 + n / 16) EXPECT_THROW(joiner.chunk(c.substr(0, n)), InputError) << n;
+  }
+  {
+    // A chunk whose workingstep names a feature and operation that have not come.
+    stepnc::Project q;
+    stepnc::MachiningWorkingstep ws;
+    ws.its_feature = stepnc::FeatureRef{3};
+    ws.its_operation = stepnc::OperationRef{3};
+    q.main_workplan.its_elements.emplace_back(ws);
+    const auto bad = stepnc_codec::split_project(q, 1);
+    stepnc_codec::ProjectJoiner joiner;
+    joiner.shell(bad.shell);
+    EXPECT_THROW(joiner.chunk(bad.chunks[0]), InputError);
+  }
+}
+
+}  // namespace
+}  // namespace ncbridge
