@@ -32,6 +32,11 @@ struct Case {
   std::string truth_program;  // key in the paper's truth.json
 };
 
+Case part(const std::string& name) {
+  const fs::path dir = fs::path(NCBRIDGE_SOURCE_DIR) / "tests" / "cc2" / "parts" / name;
+  return {name, dir / "part.ngc", dir, ""};
+}
+
 std::vector<Case> corpus() {
   const fs::path cam = kShared / "corpus" / "cam", paper = kShared / "corpus" / "paper";
   return {{"p01_block_reference", cam / "p01_block_reference" / "part.nc", cam / "p01_block_reference", ""},
@@ -40,7 +45,10 @@ std::vector<Case> corpus() {
           {"p04_open_pockets", cam / "p04_open_pockets" / "part.linuxcnc.ngc", cam / "p04_open_pockets", ""},
           {"p05_slots", cam / "p05_slots" / "part.nc", cam / "p05_slots", ""},
           {"paper_face_mill", paper / "face_mill.ngc", paper, "face_mill.ngc"},
-          {"paper_test_part", paper / "test_part.ngc", paper, "test_part.ngc"}};
+          {"paper_test_part", paper / "test_part.ngc", paper, "test_part.ngc"},
+          // Hand-designed parts of other shapes and strategies (parts/make_parts.py).
+          part("p06_nested_pockets"), part("p07_helix_holes"), part("p08_multi_level"), part("p09_small_part"),
+          part("p10_plate"), part("p11_slots_rotated_pocket")};
 }
 
 Case named(const std::string& name) {
@@ -104,6 +112,11 @@ std::vector<fr::RecognizedFeature> report_features(const fs::path& report) {
     f.type = t.type;
     f.x = t.x, f.y = t.y, f.top_z = t.top_z, f.bottom_z = t.bottom_z;
     f.diameter = t.diameter.value_or(0);
+    for (const auto& o : t.operations) {
+      fr::RecognizedOperation op;
+      op.type = o.type, op.tool_number = o.tool_number, op.strategy = o.strategy.value_or(fr::Strategy::None);
+      f.operations.push_back(op);
+    }
     if (t.type == fr::FeatureType::Slot && !t.closed) f.slot_ends = {fr::SlotEnd::Open, fr::SlotEnd::Open};
     if (t.type == fr::FeatureType::Slot && t.closed) f.slot_ends = {fr::SlotEnd::Radiused, fr::SlotEnd::Radiused};
     out.push_back(f);
@@ -137,6 +150,10 @@ TEST_P(CommentFreeCorpus, Cc2ReportScoresF1AtLeast95AndTheFileIsSchemaValid) {
   }
   EXPECT_GE(s.overall.f1(), 0.95);
   RecordProperty("f1", std::to_string(s.overall.f1()));
+  // Where the truth lists the operations, the report's operations of each matched feature agree.
+  const auto ops = fr::score_operations(found, truth, s);
+  EXPECT_EQ(ops.matched, ops.truth);
+  EXPECT_EQ(ops.recognized, ops.truth);
 
   const auto read = sw::part21::read_part21_file(dir / "part.stp");
   const auto diagnostics = sw::check_instances(read.graph, schema());
@@ -179,7 +196,9 @@ TEST_P(CommentFreeCorpus, ACc1FileGivesTheSameCc2AsItsProgram) {
 
 INSTANTIATE_TEST_SUITE_P(Parts, CommentFreeCorpus,
                          testing::Values("p01_block_reference", "p02_plate_center_zero", "p03_bracket_steps",
-                                         "p04_open_pockets", "p05_slots", "paper_face_mill", "paper_test_part"));
+                                         "p04_open_pockets", "p05_slots", "paper_face_mill", "paper_test_part",
+                                         "p06_nested_pockets", "p07_helix_holes", "p08_multi_level", "p09_small_part",
+                                         "p10_plate", "p11_slots_rotated_pocket"));
 
 TEST(Cc2Convert, SameInputSameBytes) {
   const Case c = named("paper_test_part");
