@@ -101,7 +101,8 @@ std::vector<ConstructCase> construct_cases() {
   for (const char* dialect : {"fanuc", "mach3", "siemens840d", "heidenhain"}) {
     if (!fs::exists(kHere / dialect)) continue;
     for (const auto& entry : fs::directory_iterator(kHere / dialect)) {
-      if (entry.path().extension() != ".ngc") cases.push_back({dialect, entry.path()});
+      // programs the constructs call (Heidenhain CALL PGM) sit in subdirectories
+      if (entry.is_regular_file() && entry.path().extension() != ".ngc") cases.push_back({dialect, entry.path()});
     }
   }
   std::sort(cases.begin(), cases.end(), [](const auto& a, const auto& b) { return a.program < b.program; });

@@ -291,6 +291,46 @@ TEST(Heidenhain, ChamferBetweenTwoLines) {
   EXPECT_TRUE(near(e[3], 10.0, 10.0, 0.0));
 }
 
+TEST(Heidenhain, RoundingBetweenTwoArcs) {
+  // circles of radius 10 about (0,0) and (10,10) meet at (0,10) at a right angle; the rounding's
+  // centre lies 8 from both centres: (5,5) + sqrt(14) (-1,1)/sqrt(2)
+  const std::string program =
+      "0 BEGIN PGM T MM\n1 L X+10 Y+0 Z+0 R0 FMAX\n2 CC X+0 Y+0\n3 C X+0 Y+10 DR+ F100\n4 RND R2\n"
+      "5 CC X+10 Y+10\n6 C X+10 Y+0 DR+\n7 END PGM T MM\n";
+  auto e = run(program, Dialect::Heidenhain).ends();
+  ASSERT_EQ(e.size(), 4u);
+  const double h = std::sqrt(14.0) / std::sqrt(2.0);
+  const double cx = 5 - h, cy = 5 + h;
+  EXPECT_TRUE(near(e[1], cx * 1.25, cy * 1.25, 0.0)) << e[1][0] << " " << e[1][1];
+  EXPECT_TRUE(near(e[2], 10 + (cx - 10) * 1.25, 10 + (cy - 10) * 1.25, 0.0)) << e[2][0] << " " << e[2][1];
+  EXPECT_TRUE(near(e[3], 10.0, 0.0, 0.0));
+}
+
+TEST(Heidenhain, CornerAndProgramCallErrorsAreLocated) {
+  // the TNC chamfers between two straight lines only
+  auto e = error_of("0 BEGIN PGM T MM\n1 L X+0 Y+0 R0 FMAX\n2 CC X+10 Y+0\n3 C X+10 Y+10 DR+ F100\n4 CHF 2\n"
+                    "5 L X+20\n6 END PGM T MM\n",
+                    Dialect::Heidenhain);
+  EXPECT_EQ(e.where().line, 5u);
+  EXPECT_EQ(e.where().column, 3u);
+  EXPECT_NE(e.message().find("CHF joins two straight lines"), std::string::npos) << e.message();
+  e = error_of("0 BEGIN PGM T MM\n1 L X+0 Y+0 R0 FMAX\n2 L X+10 F100\n3 RND R50\n4 L Y+10\n5 END PGM T MM\n",
+               Dialect::Heidenhain);
+  EXPECT_EQ(e.where().line, 4u);
+  EXPECT_NE(e.message().find("too large"), std::string::npos) << e.message();
+  e = error_of("0 BEGIN PGM T MM\n1 L X+10 Y+0 R0 FMAX\n2 CC X+0 Y+0\n3 C X+0 Y+10 DR+ F100\n4 RND R2\n"
+               "5 CT X+5 Y+20\n6 END PGM T MM\n",
+               Dialect::Heidenhain);
+  EXPECT_EQ(e.where().line, 5u);
+  EXPECT_NE(e.message().find("CT"), std::string::npos) << e.message();
+  e = error_of("0 BEGIN PGM T MM\n1 L X+0 R0 FMAX\n2 CALL PGM TNC:\\PARTS\\NOPE.H\n3 END PGM T MM\n",
+               Dialect::Heidenhain);
+  EXPECT_EQ(e.where().file, "test.prog");
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_EQ(e.where().column, 3u);
+  EXPECT_NE(e.message().find("NOPE.H"), std::string::npos) << e.message();
+}
+
 TEST(Heidenhain, ErrorsAreLocated) {
   auto e = error_of("0 BEGIN PGM T MM\n1 L X+0 R0 FMAX\n2 C X+5 Y+5 DR+\n3 END PGM T MM\n", Dialect::Heidenhain);
   EXPECT_EQ(e.where().line, 3u);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "block_model.hpp"
 #include "expression.hpp"
 #include "heidenhain/block_reader.hpp"
+#include "heidenhain/corner_rounding.hpp"
 #include "lowering/dialect_machine.hpp"
 #include "lowering/dialect_table.hpp"
 #include "lowering/infix_expression.hpp"
@@ -73,17 +75,32 @@ class Runner {
   void bore_milling(std::map<std::string, double>& v, double r, double bottom, double clearance, std::uint32_t column);
   void split_m(const HBlock& b, NeutralBlock& before, NeutralBlock& after);
   void add_feed(NeutralBlock& nb, std::uint32_t column);
-  void plan_corner(const HBlock& rnd, const Point3& start, const Point3& corner, const Point3& next);
+  void plan_corner(const HBlock& rnd, std::size_t index, const Point3& start, const Point3& corner, const Point3& next);
+  ContourElement next_element(const HBlock& b, std::size_t index, const Point3& start, std::size_t corner_index,
+                              std::uint32_t corner_column, std::optional<Point3> pole);
+  // An error about the block at line index `index` of the running program (a block read ahead).
+  [[noreturn]] void fail_at(std::size_t index, std::uint32_t column, const std::string& message) {
+    throw InputError({prog().text.name, static_cast<std::uint32_t>(index + 1), column}, message);
+  }
 
   const Options& options_;
   lowering::DialectTable table_;
   DialectMachine m_;
   Reader reader_;
-  ProgramText program_;
-  std::size_t pc_ = 0;
-  std::vector<Call> calls_;
-  std::map<std::string, std::size_t> labels_;
-  std::map<std::size_t, int> section_repeats_;  // CALL LBL .. REP line -> repeats left
+  // The running program and the programs that called it (CALL PGM), each with its own labels.
+  struct Program {
+    ProgramText text;
+    std::uint32_t file = 0;  // index in the canonical stream's file table
+    std::size_t pc = 0;
+    std::vector<Call> calls;
+    std::map<std::string, std::size_t> labels;
+    std::map<std::size_t, int> section_repeats;  // CALL LBL .. REP line -> repeats left
+  };
+  std::vector<Program> programs_;
+  std::map<std::string, std::uint32_t> file_index_;
+  Program& prog() { return programs_.back(); }
+  void enter_program(ProgramText text);
+  void call_program(const HBlock& b);
 
   double feed_ = 0;              // the last programmed F (control units)
   double pole_x_ = 0, pole_y_ = 0;
@@ -91,6 +108,8 @@ class Runner {
   Point3 tangent_{1, 0, 0};      // direction at the end of the last path element
   bool have_tangent_ = false;
   CornerPlan corner_;
+  std::optional<Point3> next_cr_centre_;     // a CR after the planned RND: its centre, from the corner
+  std::optional<Point3> rounded_cr_centre_;  // ... handed to that CR block
   bool cycle_on_every_move_ = false;  // M89
   std::string cycle_;            // the defined cycle number
   std::map<std::string, double> cycle_values_;
@@ -108,32 +127,85 @@ void Runner::run(ProgramText program) {
     m_.parameters().set_named("_ql" + std::to_string(i), 0.0);
     m_.parameters().set_named("_qr" + std::to_string(i), 0.0);
   }
-  program_ = std::move(program);
-  m_.announce_file(0, program_.name);
-  // labels: LBL n / LBL "name"
-  HBlock b;
-  for (std::size_t i = 0; i < program_.size(); ++i) {
-    std::string_view l = program_.line(i);
-    if (up(l).find("LBL") == std::string::npos || up(l).find("CALL") != std::string::npos) continue;
-    reader_.read(l, static_cast<std::uint32_t>(i + 1), program_.name, b);
-    if (b.kind != Kind::Label) continue;
-    std::string key = b.label_is_name ? b.text : std::to_string(std::lround(b.label_number));
-    if (key != "0") labels_.emplace(key, i);
-  }
-  m_.at(0, program_.name, 0);
+  enter_program(std::move(program));
+  m_.at(0, prog().text.name, 0);
   m_.start();
   while (step()) {
   }
 }
 
+void Runner::enter_program(ProgramText text) {
+  auto [it, added] = file_index_.emplace(text.name, static_cast<std::uint32_t>(file_index_.size()));
+  if (added) m_.announce_file(it->second, text.name);
+  Program p;
+  p.file = it->second;
+  p.text = std::move(text);
+  // labels: LBL n / LBL "name"
+  HBlock b;
+  for (std::size_t i = 0; i < p.text.size(); ++i) {
+    std::string_view l = p.text.line(i);
+    if (up(l).find("LBL") == std::string::npos || up(l).find("CALL") != std::string::npos) continue;
+    reader_.read(l, static_cast<std::uint32_t>(i + 1), p.text.name, b);
+    if (b.kind != Kind::Label) continue;
+    std::string key = b.label_is_name ? b.text : std::to_string(std::lround(b.label_number));
+    if (key != "0") p.labels.emplace(key, i);
+  }
+  programs_.push_back(std::move(p));
+}
+
+// CALL PGM name: the program file beside the calling one or on the subroutine path (as named,
+// or with .h/.H), run from its start to its END PGM, then back after the call.
+void Runner::call_program(const HBlock& b) {
+  if (programs_.size() >= 16) m_.fail(b.column, "Too many nested program calls (CALL PGM)");
+  std::string written = b.text;
+  if (written.size() >= 2 && written.front() == '"' && written.back() == '"') written = written.substr(1, written.size() - 2);
+  std::replace(written.begin(), written.end(), '\\', '/');
+  const std::filesystem::path caller_dir = std::filesystem::path(prog().text.name).parent_path();
+  if (written.find(':') == std::string::npos && written.find('/') != std::string::npos) {
+    // a path relative to the calling program
+    std::error_code ec;
+    const std::filesystem::path relative = (caller_dir.empty() ? std::filesystem::path(".") : caller_dir) / written;
+    if (std::filesystem::is_regular_file(relative, ec)) {
+      enter_program(ProgramText::from_file(relative));
+      return;
+    }
+  }
+  // a drive path (TNC:\\PARTS\\SUB.H) or a plain name: the file name, beside the caller, the
+  // main program or on the subroutine path
+  std::string name = written;
+  const std::size_t cut = name.find_last_of("/:");
+  if (cut != std::string::npos) name = name.substr(cut + 1);
+  if (name.empty()) m_.fail(b.column, "CALL PGM needs a program name");
+  std::vector<std::filesystem::path> dirs;
+  dirs.push_back(caller_dir);
+  dirs.push_back(std::filesystem::path(programs_.front().text.name).parent_path());
+  for (const auto& d : options_.subroutine_path) dirs.push_back(d);
+  for (const auto& dir : dirs) {
+    for (const char* ext : {"", ".h", ".H"}) {
+      const std::filesystem::path candidate = (dir.empty() ? std::filesystem::path(".") : dir) / (name + ext);
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(candidate, ec)) continue;
+      enter_program(ProgramText::from_file(candidate));
+      return;
+    }
+  }
+  m_.fail(b.column, "CALL PGM " + written + ": no program file " + name + " (or " + name +
+                        ".h) beside the calling program or on the subroutine path");
+}
+
 bool Runner::step() {
-  if (pc_ >= program_.size()) {
-    m_.at(0, program_.name, static_cast<std::uint32_t>(program_.size()));
+  if (prog().pc >= prog().text.size()) {
+    m_.at(prog().file, prog().text.name, static_cast<std::uint32_t>(prog().text.size()));
+    if (programs_.size() > 1) {  // a called program without END PGM ends at its last line
+      if (!prog().calls.empty()) m_.fail(1, "Called program ended inside a called label (LBL 0 missing)");
+      programs_.pop_back();
+      return true;
+    }
     if (options_.require_program_end) m_.fail(1, "File ended without END PGM");
     return false;
   }
   if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
-  std::size_t index = pc_++;
+  std::size_t index = prog().pc++;
   // every jump back to an earlier block is a loop iteration; a program that loops a million
   // times is taken as an endless loop (LinuxCNC's rs274 would run forever)
   if (steps_ > 1 && index <= last_index_ && ++backward_jumps_ > options_.max_loop_iterations) {
@@ -141,8 +213,8 @@ bool Runner::step() {
   }
   last_index_ = index;
   HBlock b;
-  reader_.read(program_.line(index), static_cast<std::uint32_t>(index + 1), program_.name, b);
-  m_.at(0, program_.name, static_cast<std::uint32_t>(index + 1), b.n);
+  reader_.read(prog().text.line(index), static_cast<std::uint32_t>(index + 1), prog().text.name, b);
+  m_.at(prog().file, prog().text.name, static_cast<std::uint32_t>(index + 1), b.n);
   switch (b.kind) {
     case Kind::Empty:
     case Kind::BlkForm:
@@ -162,7 +234,11 @@ bool Runner::step() {
       return true;
     }
     case Kind::EndPgm: {
-      if (!calls_.empty()) m_.fail(b.column, "END PGM inside a called label (LBL 0 missing)");
+      if (!prog().calls.empty()) m_.fail(b.column, "END PGM inside a called label (LBL 0 missing)");
+      if (programs_.size() > 1) {  // the end of a called program: back to the caller
+        programs_.pop_back();
+        return true;
+      }
       NeutralBlock nb;
       nb.m(30, b.column);
       m_.execute(nb);
@@ -203,14 +279,14 @@ bool Runner::step() {
     case Kind::Label: {
       bool end = !b.label_is_name && b.label_number == 0;
       if (end) {
-        if (calls_.empty()) return true;  // LBL 0 reached in the main flow: nothing to return from
-        Call& c = calls_.back();
+        if (prog().calls.empty()) return true;  // LBL 0 reached in the main flow: nothing to return from
+        Call& c = prog().calls.back();
         if (c.remaining > 0) {
           --c.remaining;
-          pc_ = c.start_pc;
+          prog().pc = c.start_pc;
         } else {
-          pc_ = c.return_pc;
-          calls_.pop_back();
+          prog().pc = c.return_pc;
+          prog().calls.pop_back();
         }
       }
       return true;
@@ -220,27 +296,28 @@ bool Runner::step() {
       if (const HWord* rep = find(b, "REP")) {
         // program section repeat: back to LBL n, REP more times, then on after this block
         if (target >= index) m_.fail(b.column, "CALL LBL ... REP repeats a section: the LBL must come before it");
-        auto it = section_repeats_.find(index);
-        if (it == section_repeats_.end()) {
+        auto it = prog().section_repeats.find(index);
+        if (it == prog().section_repeats.end()) {
           int repeats = static_cast<int>(std::lround(eval(b, *rep)));
           if (repeats < 0) m_.fail(rep->column, "REP must not be negative");
-          it = section_repeats_.emplace(index, repeats).first;
+          it = prog().section_repeats.emplace(index, repeats).first;
         }
         if (it->second > 0) {
           --it->second;
-          pc_ = target + 1;
+          prog().pc = target + 1;
         } else {
-          section_repeats_.erase(it);
+          prog().section_repeats.erase(it);
         }
         return true;
       }
-      if (calls_.size() >= 32) m_.fail(b.column, "Too many nested label calls");
-      calls_.push_back(Call{pc_, target + 1, 0});
-      pc_ = target + 1;
+      if (prog().calls.size() >= 32) m_.fail(b.column, "Too many nested label calls");
+      prog().calls.push_back(Call{prog().pc, target + 1, 0});
+      prog().pc = target + 1;
       return true;
     }
     case Kind::CallPgm:
-      m_.fail(b.column, "CALL PGM (another program file) is not supported yet");
+      call_program(b);
+      return true;
     case Kind::Assign: {
       const ExprNode& t = b.exprs.nodes[b.target];
       std::string_view name = b.exprs.name(t.name_begin, t.name_length);
@@ -251,7 +328,7 @@ bool Runner::step() {
     case Kind::FnJump: {
       double a = eval(b, b.value), c = eval(b, b.value2);
       bool taken = b.op == "EQU" ? a == c : b.op == "NE" ? a != c : b.op == "GT" ? a > c : a < c;
-      if (taken) pc_ = find_label(b) + 1;
+      if (taken) prog().pc = find_label(b) + 1;
       return true;
     }
     case Kind::Stop: {
@@ -269,8 +346,8 @@ bool Runner::step() {
 
 std::size_t Runner::find_label(const HBlock& b) {
   std::string key = b.label_is_name ? b.text : std::to_string(std::lround(b.label_number));
-  auto it = labels_.find(key);
-  if (it == labels_.end()) m_.fail(b.column, "LBL " + key + " not found");
+  auto it = prog().labels.find(key);
+  if (it == prog().labels.end()) m_.fail(b.column, "LBL " + key + " not found");
   return it->second;
 }
 
@@ -347,18 +424,19 @@ bool Runner::tool_call(const HBlock& b) {
   return !m_.execute(nb);
 }
 
-void Runner::plan_corner(const HBlock& rnd, const Point3& start, const Point3& corner, const Point3& next) {
+void Runner::plan_corner(const HBlock& rnd, std::size_t index, const Point3& start, const Point3& corner,
+                         const Point3& next) {
   double ux = corner.x - start.x, uy = corner.y - start.y;
   double vx = next.x - corner.x, vy = next.y - corner.y;
   double lu = std::hypot(ux, uy), lv = std::hypot(vx, vy);
-  if (lu < 1e-9 || lv < 1e-9) m_.fail(rnd.column, rnd.keyword + " between elements of zero length");
+  if (lu < 1e-9 || lv < 1e-9) fail_at(index, rnd.column, rnd.keyword + " between elements of zero length");
   ux /= lu; uy /= lu; vx /= lv; vy /= lv;
   double cross = ux * vy - uy * vx, dot = ux * vx + uy * vy;
-  if (std::fabs(cross) < 1e-9) m_.fail(rnd.column, rnd.keyword + " at a corner without a change of direction");
+  if (std::fabs(cross) < 1e-9) fail_at(index, rnd.column, rnd.keyword + " at a corner without a change of direction");
   const HWord* r = find(rnd, rnd.keyword == "RND" ? "R" : "");
   double size = 0;
   if (rnd.keyword == "RND") {
-    if (!r || r->value == kNoExpr) m_.fail(rnd.column, "RND needs R");
+    if (!r || r->value == kNoExpr) fail_at(index, rnd.column, "RND needs R");
     size = eval(rnd, r->value);
   } else {
     // CHF 5: the length is the block's first value
@@ -367,7 +445,7 @@ void Runner::plan_corner(const HBlock& rnd, const Point3& start, const Point3& c
     }
     if (size == 0 && !rnd.words.empty() && rnd.words.front().value != kNoExpr) size = eval(rnd, rnd.words.front().value);
   }
-  if (size <= 0) m_.fail(rnd.column, rnd.keyword + " size must be positive");
+  if (size <= 0) fail_at(index, rnd.column, rnd.keyword + " size must be positive");
   corner_ = CornerPlan{};
   corner_.active = true;
   corner_.chamfer = rnd.keyword == "CHF";
@@ -376,7 +454,7 @@ void Runner::plan_corner(const HBlock& rnd, const Point3& start, const Point3& c
     double turn = std::acos(std::clamp(dot, -1.0, 1.0));
     along = size * std::tan(turn / 2.0);
   }
-  if (along > lu + 1e-9 || along > lv + 1e-9) m_.fail(rnd.column, rnd.keyword + " too large for the elements it joins");
+  if (along > lu + 1e-9 || along > lv + 1e-9) fail_at(index, rnd.column, rnd.keyword + " too large for the elements it joins");
   corner_.t1 = {corner.x - ux * along, corner.y - uy * along, corner.z};
   corner_.t2 = {corner.x + vx * along, corner.y + vy * along, corner.z};
   corner_.ccw = cross > 0;
@@ -457,6 +535,17 @@ bool Runner::path(const HBlock& b, std::size_t index) {
       m_.put_xy_arc(nb, !corner_.ccw, corner_.t2.x, corner_.t2.y, std::nullopt, corner_.centre.x, corner_.centre.y, b.column);
     }
     corner_.active = false;
+    if (!corner_.chamfer) {
+      const double rx = corner_.t2.x - corner_.centre.x, ry = corner_.t2.y - corner_.centre.y;
+      const double l = std::hypot(rx, ry);
+      if (l > 0) tangent_ = corner_.ccw ? Point3{-ry / l, rx / l, 0} : Point3{ry / l, -rx / l, 0};
+    } else {
+      const double dx = corner_.t2.x - corner_.t1.x, dy = corner_.t2.y - corner_.t1.y;
+      const double l = std::hypot(dx, dy);
+      if (l > 0) tangent_ = {dx / l, dy / l, 0};
+    }
+    rounded_cr_centre_ = next_cr_centre_;
+    next_cr_centre_.reset();
     if (m_.execute(nb)) return false;
     return !m_.execute(after);
   }
@@ -501,20 +590,15 @@ bool Runner::path(const HBlock& b, std::size_t index) {
   } else if (k == "CR") {
     if (!radius) m_.fail(b.column, "CR needs R (the radius)");
     if (!dr) m_.fail(b.column, "CR needs the direction DR+ or DR-");
-    double r = std::fabs(*radius);
-    double dx = end.x - here.x, dy = end.y - here.y;
-    double chord = std::hypot(dx, dy);
-    if (chord < 1e-9) m_.fail(b.column, "CR to its own start point");
-    if (chord > 2 * r + 1e-6) m_.fail(b.column, "CR radius too small to reach the end point");
-    double h = std::sqrt(std::max(0.0, r * r - chord * chord / 4));
-    double mx = (here.x + end.x) / 2, my = (here.y + end.y) / 2;
-    // R+ : the shorter arc (< 180 degrees); R- : the longer. The centre lies right of the chord
-    // for a short clockwise arc.
-    bool right = (cw == (*radius > 0));
-    double nx = dy / chord, ny = -dx / chord;  // right-hand normal of the chord
-    if (!right) { nx = -nx; ny = -ny; }
-    cx = mx + nx * h;
-    cy = my + ny * h;
+    if (rounded_cr_centre_) {
+      // after a RND the arc is the one programmed from the corner point, now entered at the
+      // rounding's end
+      cx = rounded_cr_centre_->x;
+      cy = rounded_cr_centre_->y;
+    } else {
+      if (std::hypot(end.x - here.x, end.y - here.y) < 1e-9) m_.fail(b.column, "CR to its own start point");
+      if (!radius_arc_centre(here, end, *radius, cw, cx, cy)) m_.fail(b.column, "CR radius too small to reach the end point");
+    }
     arc = true;
     pole_x_ = cx;  // the control takes a CR's centre as the new pole
     pole_y_ = cy;
@@ -532,37 +616,73 @@ bool Runner::path(const HBlock& b, std::size_t index) {
     }
   }
 
+  rounded_cr_centre_.reset();
+
   // A RND/CHF after this block shortens it to the corner's first tangent point.
   Point3 final_end = end;
   {
     std::size_t j = index + 1;
     HBlock nb2;
-    while (j < program_.size()) {
-      reader_.read(program_.line(j), static_cast<std::uint32_t>(j + 1), program_.name, nb2);
+    while (j < prog().text.size()) {
+      reader_.read(prog().text.line(j), static_cast<std::uint32_t>(j + 1), prog().text.name, nb2);
       if (nb2.kind != Kind::Empty && nb2.kind != Kind::Comment) break;
       ++j;
     }
-    if (j < program_.size() && nb2.kind == Kind::Path && (nb2.keyword == "RND" || nb2.keyword == "CHF")) {
-      if (arc) m_.fail(nb2.column, nb2.keyword + " after a circular block is not supported yet");
+    if (j < prog().text.size() && nb2.kind == Kind::Path && (nb2.keyword == "RND" || nb2.keyword == "CHF")) {
+      if (rapid) fail_at(j, nb2.column, nb2.keyword + " after a rapid (FMAX) block: a corner is cut at feed");
       // the element after the corner
       std::size_t j2 = j + 1;
       HBlock after_block;
-      while (j2 < program_.size()) {
-        reader_.read(program_.line(j2), static_cast<std::uint32_t>(j2 + 1), program_.name, after_block);
+      while (j2 < prog().text.size()) {
+        reader_.read(prog().text.line(j2), static_cast<std::uint32_t>(j2 + 1), prog().text.name, after_block);
         if (after_block.kind != Kind::Empty && after_block.kind != Kind::Comment) break;
         ++j2;
       }
-      if (j2 >= program_.size() || after_block.kind != Kind::Path || after_block.keyword != "L") {
-        m_.fail(nb2.column, nb2.keyword + " must be followed by a straight L block here");
+      // a CC between the corner and a C block sets the C block's centre
+      std::optional<Point3> pole;
+      while (j2 < prog().text.size() && after_block.kind == Kind::Path && after_block.keyword == "CC") {
+        Point3 c{pole_x_, pole_y_, 0};
+        for (const HWord& w : after_block.words) {
+          if (w.value == kNoExpr) continue;
+          const double v = eval(after_block, w.value);
+          if (w.name == "X") c.x = v; else if (w.name == "Y") c.y = v;
+          else if (w.name == "IX") c.x = end.x + v; else if (w.name == "IY") c.y = end.y + v;
+        }
+        pole = c;
+        do {
+          ++j2;
+          if (j2 >= prog().text.size()) break;
+          reader_.read(prog().text.line(j2), static_cast<std::uint32_t>(j2 + 1), prog().text.name, after_block);
+        } while (after_block.kind == Kind::Empty || after_block.kind == Kind::Comment);
       }
-      Point3 next = end;
-      for (const HWord& w : after_block.words) {
-        if (w.value == kNoExpr) continue;
-        double v = evaluate(after_block.exprs, w.value, m_.parameters(), m_.file_name());
-        if (w.name == "X") next.x = v; else if (w.name == "Y") next.y = v;
-        else if (w.name == "IX") next.x = end.x + v; else if (w.name == "IY") next.y = end.y + v;
+      if (j2 >= prog().text.size() || after_block.kind != Kind::Path) {
+        fail_at(j, nb2.column, nb2.keyword + " must be followed by a contour block (L, C or CR)");
       }
-      plan_corner(nb2, here, end, next);
+      if (nb2.keyword == "CHF") {
+        // the TNC chamfers only between two straight lines
+        if (arc) fail_at(j, nb2.column, "CHF joins two straight lines: the block before it is an arc (use RND)");
+        if (after_block.keyword != "L") {
+          fail_at(j, nb2.column, "CHF joins two straight lines: the block after it is not L (use RND)");
+        }
+        ContourElement out = next_element(after_block, j2, end, j, nb2.column, pole);
+        plan_corner(nb2, j, here, end, out.end);
+      } else {
+        ContourElement in{here, end, arc, cx, cy, cw};
+        ContourElement out = next_element(after_block, j2, end, j, nb2.column, pole);
+        const HWord* r = find(nb2, "R");
+        if (!r || r->value == kNoExpr) fail_at(j, nb2.column, "RND needs R");
+        const double size = eval(nb2, r->value);
+        if (size <= 0) fail_at(j, nb2.column, "RND size must be positive");
+        const RoundedCorner rc = round_corner(in, out, size);
+        if (!rc.ok) fail_at(j, nb2.column, rc.error);
+        corner_ = CornerPlan{};
+        corner_.active = true;
+        corner_.t1 = rc.t1;
+        corner_.t2 = rc.t2;
+        corner_.centre = rc.centre;
+        corner_.ccw = rc.ccw;
+        if (out.arc && after_block.keyword == "CR") next_cr_centre_ = Point3{out.cx, out.cy, 0};
+      }
       final_end = corner_.t1;
       x = final_end.x;
       y = final_end.y;
@@ -598,6 +718,52 @@ bool Runner::path(const HBlock& b, std::size_t index) {
   if (m_.execute(nb)) return false;
   if (m99 || (cycle_on_every_move_ && (x || y))) cycle_call(b.column);
   return !m_.execute(after);
+}
+
+// The contour element a path block describes, starting at `start` (the nominal corner point):
+// what a RND or CHF before it needs to know. L, C (about the current CC) and CR.
+ContourElement Runner::next_element(const HBlock& b, std::size_t index, const Point3& start, std::size_t corner_index,
+                                    std::uint32_t corner_column, std::optional<Point3> pole) {
+  ContourElement e;
+  e.start = start;
+  e.end = start;
+  std::optional<double> radius;
+  bool dr = false;
+  for (const HWord& w : b.words) {
+    if (w.name == "DR") {
+      dr = true;
+      e.cw = w.sign == '-' || (w.value != kNoExpr && eval(b, w.value) < 0);
+      continue;
+    }
+    if (w.value == kNoExpr) continue;
+    const double v = eval(b, w.value);
+    if (w.name == "X") e.end.x = v;
+    else if (w.name == "Y") e.end.y = v;
+    else if (w.name == "Z") e.end.z = v;
+    else if (w.name == "IX") e.end.x = start.x + v;
+    else if (w.name == "IY") e.end.y = start.y + v;
+    else if (w.name == "IZ") e.end.z = start.z + v;
+    else if (w.name == "R" && b.keyword == "CR") radius = v;
+  }
+  if (b.keyword == "L") return e;
+  if (b.keyword == "C") {
+    if (!have_pole_ && !pole) fail_at(index, b.column, "C without a circle centre: program CC first");
+    if (!dr) fail_at(index, b.column, "C needs the direction DR+ or DR-");
+    e.arc = true;
+    e.cx = pole ? pole->x : pole_x_;
+    e.cy = pole ? pole->y : pole_y_;
+    return e;
+  }
+  if (b.keyword == "CR") {
+    if (!radius) fail_at(index, b.column, "CR needs R (the radius)");
+    if (!dr) fail_at(index, b.column, "CR needs the direction DR+ or DR-");
+    e.arc = true;
+    if (!radius_arc_centre(start, e.end, *radius, e.cw, e.cx, e.cy)) {
+      fail_at(index, b.column, "CR radius too small to reach the end point");
+    }
+    return e;
+  }
+  fail_at(corner_index, corner_column, "RND/CHF followed by " + b.keyword + ": only L, C or CR can follow a corner here");
 }
 
 void Runner::cycle_def(const HBlock& b) {
@@ -765,7 +931,7 @@ void Runner::cycle_call(std::uint32_t column) {
       double pitch = get("pitch");
       feed_rate = std::fabs(pitch) * m_.state().speed;
       if (feed_rate <= 0) m_.fail(column, "Cycle 207 needs a spindle speed to feed the pitch");
-      if (pitch < 0) m_.fail(column, "Cycle 207 with a negative pitch (left-hand thread) is not supported yet");
+      if (pitch < 0) code = 74;  // a left-hand thread: the spindle turns counter-clockwise going in
     } else if (cycle_ == "208") {
       bore_milling(v, r, bottom, clearance, column);
       return;
@@ -791,10 +957,19 @@ void Runner::cycle_call(std::uint32_t column) {
   nb.add('r', r + m_.frame.offset.z, column);
   if (code == 83 || code == 73) nb.add('q', peck, column);
   if (code == 82 || code == 89) nb.add('p', dwell, column);
+  // left-hand tapping with the spindle programmed clockwise: reversed for the cycle, as the
+  // control does, and back after it
+  const bool reverse = code == 74 && m_.state().spindle == canonical::Direction::Clockwise;
+  if (reverse) {
+    NeutralBlock ccw;
+    ccw.m(4, column);
+    m_.execute(ccw);
+  }
   m_.execute(nb);
   // the control's feed for following blocks is the last programmed F, not the cycle's
   NeutralBlock cancel;
   cancel.g(80, column);
+  if (reverse) cancel.m(3, column);
   m_.execute(cancel);
 }
 
