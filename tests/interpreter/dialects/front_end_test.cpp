@@ -291,6 +291,23 @@ TEST(Heidenhain, ChamferBetweenTwoLines) {
   EXPECT_TRUE(near(e[3], 10.0, 10.0, 0.0));
 }
 
+TEST(Heidenhain, QParameterFunctionsAndLabelCalls) {
+  // FN 0-4 (assignment and the four operations), FN 9 jump, a named label called as a subprogram
+  const std::string program =
+      "0 BEGIN PGM T MM\n1 FN 0: Q1 = +6\n2 FN 3: Q2 = +Q1 * +2.5\n3 FN 4: Q3 = +Q2 DIV +3\n"
+      "4 FN 1: Q4 = +Q3 + +Q1\n5 FN 2: Q5 = +Q4 - +20\n6 L X+Q2 Y+Q3 Z+Q5 R0 FMAX\n7 CALL LBL \"MOVE\"\n"
+      "8 FN 9: IF +Q3 EQU +5 GOTO LBL 2\n9 L X+99 R0 FMAX\n10 LBL 2\n11 CALL LBL \"MOVE\"\n12 END PGM T MM\n"
+      "13 LBL \"MOVE\"\n14 L IX+1 R0 FMAX\n15 LBL 0\n";
+  auto e = run(program, Dialect::Heidenhain).ends();
+  ASSERT_EQ(e.size(), 3u);
+  EXPECT_TRUE(near(e[0], 15.0, 5.0, -9.0));
+  EXPECT_TRUE(near(e[1], 16.0, 5.0, -9.0));
+  EXPECT_TRUE(near(e[2], 17.0, 5.0, -9.0));
+  auto err = error_of("0 BEGIN PGM T MM\n1 FN 4: Q4 = +1 DIV +Q9\n2 END PGM T MM\n", Dialect::Heidenhain);
+  EXPECT_EQ(err.where().line, 2u);
+  EXPECT_NE(err.message().find("divide by zero"), std::string::npos) << err.message();
+}
+
 TEST(Heidenhain, RoundingBetweenTwoArcs) {
   // circles of radius 10 about (0,0) and (10,10) meet at (0,10) at a right angle; the rounding's
   // centre lies 8 from both centres: (5,5) + sqrt(14) (-1,1)/sqrt(2)
