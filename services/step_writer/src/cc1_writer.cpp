@@ -24,6 +24,7 @@
 #include "ncbridge/step_writer/stepnc_file.hpp"
 #include "ncbridge/step_writer/stepnc_stream_writer.hpp"
 #include "cc2_writer.hpp"
+#include "instance_id_list.hpp"
 #include "part21_instance_stream.hpp"
 #include "recent_instances.hpp"
 
@@ -111,7 +112,9 @@ class Cc1Writer {
     const InstanceId setup = write_setup();
     s_.begin("WORKPLAN");
     s_.string(p_->main_workplan.its_id);
-    s_.refs(executables_);
+    s_.open_list();
+    executables_.for_each([&](InstanceId id) { s_.ref(id); });
+    s_.close_list();
     s_.unset();
     s_.ref(setup);
     s_.unset();
@@ -732,7 +735,7 @@ class Cc1Writer {
   InstanceStream& s_;
   bool streamed_;
   InstanceId workpiece_ = 0, security_plane_ = 0;
-  std::vector<InstanceId> executables_;
+  part21::InstanceIdList executables_;
   std::vector<std::uint32_t> feature_first_;
   std::vector<sn::OperationRef> feature_ops_;
   std::vector<InstanceId> tools_, technologies_, functions_, operations_, features_;  // 0: not written yet

@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cstring>
 #include <memory>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -55,6 +56,7 @@ class InstanceStream {
     char* p = separator(room(kSeparatorChars + 1 + kMaxIdChars));
     *p++ = '#';
     len_ = static_cast<std::size_t>(write_id(p, id) - buf_.get());
+    if (len_ >= kChunk) flush();  // a long list (a workplan's elements) is handed on as it goes
   }
   void unset() { token("$"); }
   void string(std::string_view utf8) {
@@ -119,7 +121,7 @@ class InstanceStream {
 
   InstanceId begin_instance(InstanceId id, std::string_view entity) {
     current_ = id;
-    line_start_ = len_;
+    line_start_ = static_cast<std::ptrdiff_t>(len_);
     char* p = room(kMaxIdChars + entity.size() + 3);
     *p++ = '#';
     p = write_id(p, id);
@@ -189,9 +191,9 @@ class InstanceStream {
     }
     *p++ = ',';
     const std::size_t at = static_cast<std::size_t>(p - buf_.get());
-    if (at - line_start_ > kLineWidth) {
+    if (static_cast<std::ptrdiff_t>(at) - line_start_ > static_cast<std::ptrdiff_t>(kLineWidth)) {
       *p++ = '\n';
-      line_start_ = at + 1;
+      line_start_ = static_cast<std::ptrdiff_t>(at) + 1;
       *p++ = ' ';
       *p++ = ' ';
     }
@@ -201,15 +203,15 @@ class InstanceStream {
     if (len_ == 0) return;
     written_ += len_;
     sink_(std::string_view(buf_.get(), len_));
+    line_start_ -= static_cast<std::ptrdiff_t>(len_);  // may be before the buffer: an instance goes on
     len_ = 0;
-    line_start_ = 0;
   }
 
   const ChunkSink& sink_;
   std::size_t capacity_;
   std::unique_ptr<char[]> buf_;
   std::size_t len_ = 0;
-  std::size_t line_start_ = 0;
+  std::ptrdiff_t line_start_ = 0;  // in the buffer; negative once an instance's start was handed on
   bool first_ = true;
   InstanceId next_ = 1;
   InstanceId current_ = 0;
