@@ -308,3 +308,126 @@ TEST(Recognition, NonFiniteCoordinateIsAnInputErrorWithItsLine) {
 }
 
 TEST(Recognition, NoWorkingstepsNoFeatures) { EXPECT_TRUE(fr::recognize({}, block()).empty()); }
+
+// A helix as CC1 gives it (a polyline, no arcs), at two radii: one hole of the outer size.
+TEST(Recognition, HelicesAtTwoRadiiAsPolylinesAreOneMilledRoundHole) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 8));
+  for (double radius : {2.5, 6.0}) {
+    b.rapid(50 + radius, 40, 2).feed(50 + radius, 40, 0.5);
+    const int n = 72;
+    for (int i = 1; i <= 6 * n; ++i) {  // six turns down to -12 by 2 mm
+      const double a = 2 * 3.14159265358979323846 * i / n;
+      b.feed(50 + radius * std::cos(a), 40 + radius * std::sin(a), std::max(-12.0, 0.5 - 2.0 * i / n));
+    }
+    b.feed(50, 40, -12).rapid(50, 40, 5);
+  }
+  const auto& f = only(fr::recognize(b.steps(), block()));
+  EXPECT_EQ(f.type, fr::FeatureType::RoundHole);
+  EXPECT_NEAR(f.diameter, 20, 0.01);
+  EXPECT_NEAR(f.x, 50, 0.01);
+  EXPECT_NEAR(f.y, 40, 0.01);
+  EXPECT_DOUBLE_EQ(f.bottom_z, -12);
+  EXPECT_EQ(f.operations[0].strategy, fr::Strategy::Helical);
+}
+
+// Flat concentric circles at each level clear a circular pocket, not a hole.
+TEST(Recognition, FlatConcentricCirclesAreACircularPocket) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 6));
+  for (double z : {-3.0, -6.0}) {
+    b.rapid(50, 40, 2).feed(50, 40, z);
+    for (double r : {2.0, 5.0}) b.feed(50 + r, 40, z).arc(50 + r, 40, z, 50, 40, false);
+    b.rapid(55, 40, 5);
+  }
+  const auto& f = only(fr::recognize(b.steps(), block()));
+  EXPECT_EQ(f.type, fr::FeatureType::ClosedPocket);
+  EXPECT_EQ(f.profile.shape, fr::ProfileShape::Circular);
+  EXPECT_EQ(f.operations[0].strategy, fr::Strategy::ContourParallel);
+}
+
+// A contour around material that nothing else cuts, above the part bottom: the outside profile
+// of a boss, its top where the boss stands.
+TEST(Recognition, ContourAroundAStandingIslandIsTheBossOutsideProfile) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 10)).rapid(65, 40, 2);
+  for (double z : {-4.0, -8.0}) b.feed(65, 40, z).arc(65, 40, z, 50, 40, true);
+  b.rapid(65, 40, 5);
+  const auto& f = only(fr::recognize(b.steps(), block()));
+  EXPECT_EQ(f.type, fr::FeatureType::GeneralOutsideProfile);
+  EXPECT_NEAR(f.x, 50, 0.01);
+  EXPECT_NEAR(f.y, 40, 0.01);
+  EXPECT_NEAR(f.profile.diameter, 20, 0.05);
+  EXPECT_DOUBLE_EQ(f.top_z, 0);
+  EXPECT_DOUBLE_EQ(f.bottom_z, -8);
+  EXPECT_EQ(f.operations[0].strategy, fr::Strategy::Contour);
+}
+
+// Passes broken around an island (retract, move over, plunge again) are one layer per level,
+// and the levels one feature.
+TEST(Recognition, PassesBrokenAroundAnIslandAreOneFeature) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 10));
+  for (double z : {-3.0, -6.0}) {
+    for (double y : {45.0, 53.0, 61.0, 69.0, 77.0, 85.0}) {
+      if (std::abs(y - 65) < 12) {  // the island at (50, 65), kept 12 from the tool centre
+        const double h = std::sqrt(144 - (y - 65) * (y - 65));
+        b.rapid(20, y, 2).feed(20, y, z).feed(50 - h, y, z).rapid(50 - h, y, 2);
+        b.rapid(50 + h, y, 2).feed(50 + h, y, z).feed(80, y, z).rapid(80, y, 2);
+      } else {
+        b.rapid(20, y, 2).feed(20, y, z).feed(80, y, z).rapid(80, y, 2);
+      }
+    }
+  }
+  const auto features = fr::recognize(b.steps(), block());
+  ASSERT_EQ(features.size(), 1u);
+  EXPECT_EQ(features[0].type, fr::FeatureType::OpenPocket);
+  EXPECT_DOUBLE_EQ(features[0].bottom_z, -6);
+  EXPECT_EQ(features[0].operations.size(), 1u);
+  EXPECT_EQ(features[0].operations[0].layers, 2);
+}
+
+// The outside profile's last level rises over tabs: still one level, one through profile.
+TEST(Recognition, TabsOnTheLastLevelOfAnOutsideProfileBelongToThatLevel) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(2, ToolType::FlatEndMill, 10)).rapid(-5, -5, 2);
+  b.feed(-5, -5, -10).feed(-5, 75, -10).feed(95, 75, -10).feed(95, -5, -10).feed(-5, -5, -10);
+  b.feed(-5, -5, -20.5).feed(-5, 30, -20.5).feed(-5, 30, -18).feed(-5, 40, -18).feed(-5, 40, -20.5);
+  b.feed(-5, 75, -20.5).feed(95, 75, -20.5).feed(95, -5, -20.5).feed(50, -5, -20.5).feed(50, -5, -18).feed(40, -5, -18);
+  b.feed(40, -5, -20.5).feed(-5, -5, -20.5).rapid(-5, -5, 5);
+  auto stock = block();
+  stock.min = {-3, -3, -20};
+  stock.max = {93, 73, 0};
+  const auto& f = only(fr::recognize(b.steps(), stock));
+  EXPECT_EQ(f.type, fr::FeatureType::GeneralOutsideProfile);
+  EXPECT_EQ(f.bottom, fr::BottomCondition::Through);
+  EXPECT_DOUBLE_EQ(f.bottom_z, -20);  // the part's bottom, not where the tool went below it
+  EXPECT_EQ(f.operations[0].layers, 2);
+  EXPECT_EQ(f.operations[0].strategy, fr::Strategy::Contour);
+}
+
+// A step between two lower steps: open along all of its side that still stands.
+TEST(Recognition, AStepBetweenTwoDeeperStepsIsAStep) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 10));
+  zigzag(b, 5, 5, -10, 90, 10, -10);   // x- side, 10 wide, to -10 (passes along Y)
+  zigzag(b, 95, 95, -10, 90, 10, -10);  // x+ side
+  zigzag(b, 0, 100, 3, 3, 10, -4);      // y- side between them, 8 wide, to -4
+  const auto features = fr::recognize(b.steps(), block());
+  ASSERT_EQ(features.size(), 3u);
+  EXPECT_EQ(features[2].type, fr::FeatureType::Step);
+  EXPECT_DOUBLE_EQ(features[2].top_z, 0);
+  EXPECT_DOUBLE_EQ(features[2].bottom_z, -4);
+}
+
+TEST(Recognition, SpotDrillAndTapDoNotSizeTheHole) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::SpotDrill, 12, 90)).drill(30, 30, 5, -2);
+  b.workingstep(make_tool(2, ToolType::Drill, 6.8, 118)).drill(30, 30, 5, -20);
+  b.workingstep(make_tool(3, ToolType::Tap, 8)).drill(30, 30, 5, -16);
+  const auto& f = only(fr::recognize(b.steps(), block()));
+  EXPECT_DOUBLE_EQ(f.diameter, 6.8);
+  ASSERT_EQ(f.operations.size(), 3u);
+  EXPECT_EQ(f.operations[0].type, fr::OperationType::CenterDrilling);
+  EXPECT_EQ(f.operations[2].type, fr::OperationType::Tapping);
+}

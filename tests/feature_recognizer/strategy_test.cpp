@@ -125,3 +125,21 @@ TEST(CutterLocations, SurfaceMachiningIsFreeform) {
   ASSERT_EQ(analysis.layers.size(), 1u);
   EXPECT_TRUE(analysis.layers[0].freeform);
 }
+
+// examples/plate's face: two passes in opposite senses, the step between them a rapid.
+TEST(MillingStrategy, TwoPassesJoinedByARapidAreBidirectional) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FaceMill, 50)).rapid(-30, 15, 2).feed(-30, 15, 0).feed(110, 15, 0);
+  b.rapid(110, 45, 0).feed(-30, 45, 0);
+  const auto s = only_layer(b);
+  EXPECT_EQ(s.strategy, fr::Strategy::Bidirectional);
+  EXPECT_NEAR(s.stepover, 30, 1e-9);
+}
+
+// A slot ramped down along its centre line and cut back at the level.
+TEST(MillingStrategy, BackAndForthOnOneLineIsCentreMilling) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 8)).rapid(10, 10, 2).feed(10, 10, 0);
+  b.feed(60, 10, -2).feed(10, 10, -2).feed(60, 10, -2);
+  EXPECT_EQ(only_layer(b).strategy, fr::Strategy::CenterMilling);
+}
