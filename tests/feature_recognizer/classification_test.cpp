@@ -431,3 +431,17 @@ TEST(Recognition, SpotDrillAndTapDoNotSizeTheHole) {
   EXPECT_EQ(f.operations[0].type, fr::OperationType::CenterDrilling);
   EXPECT_EQ(f.operations[2].type, fr::OperationType::Tapping);
 }
+
+// The inner pocket covers most of the outer one's floor (same tool, cut right after it): still
+// two features, because its area is not the outer's.
+TEST(Recognition, ALargeNestedPocketCutWithTheSameToolIsItsOwnFeature) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(2, ToolType::FlatEndMill, 10));
+  rectangles(b, 50, 40, 25, 15, 5, {-5});
+  rectangles(b, 50, 40, 20, 10, 5, {-9, -13});
+  const auto features = fr::recognize(b.steps(), block());
+  ASSERT_EQ(features.size(), 2u);
+  EXPECT_DOUBLE_EQ(features[0].bottom_z, -5);
+  EXPECT_DOUBLE_EQ(features[1].top_z, -5);
+  EXPECT_DOUBLE_EQ(features[1].bottom_z, -13);
+}

@@ -53,6 +53,69 @@ void compute_layer_areas(std::vector<Layer>& layers, double tolerance) {
   }
 }
 
+// Area, fill, floor and order of a group from its operations' layers.
+void rebuild(MillingGroup& group, const std::vector<Layer>& layers) {
+  group.area = Region();
+  group.filled = Region();
+  group.floor = 1e300;
+  bool first = true;
+  for (auto i : group.layers()) {
+    const auto& l = layers[i];
+    group.area = group.area.united(l.area);
+    group.filled = group.filled.united(l.area.filled());
+    group.floor = std::min(group.floor, l.z);
+    if (first || l.sequence < group.sequence) {
+      group.sequence = l.sequence;
+      group.first_workingstep = l.workingsteps.front();
+      first = false;
+    }
+  }
+}
+
+double box_area(const Box2& b) { return std::max(0.0, b.width()) * std::max(0.0, b.height()); }
+
+// A step-down onto a clearly smaller area than the layer before it (its extent and its filled
+// area less than 80 % of that layer's) is a pocket nested in the floor, cut right after with the
+// same tool: it and the rest of that operation become their own group, with the later
+// operations that go below the outer floor.
+void split_nested_step_downs(std::vector<MillingGroup>& groups, const std::vector<Layer>& layers) {
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (groups[g].freeform) continue;
+    for (std::size_t k = 0; k < groups[g].operations.size(); ++k) {
+      auto& op = groups[g].operations[k];
+      std::size_t split = 0;
+      for (std::size_t j = 1; j < op.layers.size() && split == 0; ++j) {
+        const auto& prev = layers[op.layers[j - 1]];
+        const auto& cur = layers[op.layers[j]];
+        if (cur.area.same_as(prev.area) || cur.z >= prev.z - 1e-3) continue;
+        if (box_area(cur.extent) >= 0.8 * box_area(prev.extent)) continue;
+        if (cur.area.filled().area() < 0.8 * prev.area.filled().area()) split = j;
+      }
+      if (split == 0) continue;
+      MillingGroup inner;
+      inner.freeform = false;
+      inner.operations.push_back({{op.layers.begin() + static_cast<std::ptrdiff_t>(split), op.layers.end()}, op.tool_number});
+      op.layers.resize(split);
+      auto& outer = groups[g];
+      rebuild(outer, layers);
+      for (std::size_t m = k + 1; m < outer.operations.size();) {
+        double lowest = 1e300;
+        for (auto i : outer.operations[m].layers) lowest = std::min(lowest, layers[i].z);
+        if (lowest < outer.floor - 1e-3) {
+          inner.operations.push_back(std::move(outer.operations[m]));
+          outer.operations.erase(outer.operations.begin() + static_cast<std::ptrdiff_t>(m));
+        } else {
+          ++m;
+        }
+      }
+      rebuild(outer, layers);
+      rebuild(inner, layers);
+      groups.push_back(std::move(inner));  // looked at in turn: it may hold a nesting too
+      break;
+    }
+  }
+}
+
 Region disk(Point2 c, double diameter, double tolerance) { return Region::polygon(stadium(c, c, diameter / 2, tolerance)); }
 
 struct Pending {
@@ -69,7 +132,8 @@ std::vector<RecognizedFeature> recognize(const std::vector<ToolpathWorkingstep>&
                                          const setup::Stock& stock, const Options& options) {
   auto analysis = analyse_cutter_locations(workingsteps, options.chord_tolerance);
   compute_layer_areas(analysis.layers, options.chord_tolerance);
-  const auto groups = group_layers(analysis.layers, options.finishing_allowance);
+  auto groups = group_layers(analysis.layers, options.finishing_allowance);
+  split_nested_step_downs(groups, analysis.layers);
   const auto part = find_part_envelope(groups, stock, options.chord_tolerance);
 
   std::vector<Pending> pending;
