@@ -35,6 +35,9 @@ constexpr std::array<std::pair<std::string_view, ToolType>, 9> kToolTypeAliases{
 }};
 
 void sort_and_check(std::vector<Tool>& tools, const std::string& file) {
+  for (std::size_t i = 0; i < tools.size(); ++i) {
+    if (tools[i].listed == 0) tools[i].listed = static_cast<int>(i) + 1;
+  }
   std::sort(tools.begin(), tools.end(), [](const Tool& a, const Tool& b) { return a.number < b.number; });
   for (std::size_t i = 1; i < tools.size(); ++i) {
     if (tools[i].number == tools[i - 1].number) {

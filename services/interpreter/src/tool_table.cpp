@@ -16,6 +16,7 @@ ToolTable::ToolTable(const setup::ToolList& tools) {
     e.offset_mm.x = t.x_offset;
     e.offset_mm.z = t.length;
     e.diameter_mm = t.diameter;
+    e.listed = t.listed;
     entries_.push_back(e);
   }
 }
@@ -39,7 +40,7 @@ ToolEntry& ToolTable::find_or_add(int number) {
 
 int ToolTable::pocket_of(int number) const {
   auto it = std::lower_bound(entries_.begin(), entries_.end(), number, before);
-  if (it != entries_.end() && it->number == number) return static_cast<int>(it - entries_.begin()) + 1;
+  if (it != entries_.end() && it->number == number && it->listed > 0) return it->listed;
   return number;
 }
 

@@ -20,6 +20,7 @@ struct ToolEntry {
   double diameter_mm = 0;
   double frontangle = 0, backangle = 0;
   int orientation = 0;
+  int listed = 0;  // position in the tool table as given, 0 for entries made by G10
 };
 
 class ToolTable {
@@ -30,8 +31,8 @@ class ToolTable {
   ToolEntry* find(int number);
   // The entry for `number`, made (all zero) when the table has none.
   ToolEntry& find_or_add(int number);
-  // LinuxCNC's pocket index of a tool: 1-based position in the table; for a tool the table
-  // does not hold (no table given), the tool number itself.
+  // LinuxCNC's pocket index of a tool (non-random tool changer): its 1-based position in the
+  // table file as listed, not sorted; for a tool the table does not hold, the tool number.
   int pocket_of(int number) const;
   bool empty() const { return entries_.empty(); }
 

@@ -32,6 +32,7 @@ struct Tool {
   // LinuxCNC tool-table extras (offsets beyond Z, orientation for lathes) are kept here.
   double x_offset = 0;            // mm
   int pocket = 0;                 // P in a tool table; defaults to the tool number
+  int listed = 0;                 // 1-based position in its file (LinuxCNC's tool-table index)
 };
 
 class ToolList {
