@@ -10,6 +10,7 @@
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
+#include "ncbridge/setup/tool_list.hpp"
 
 namespace {
 
@@ -252,12 +253,52 @@ TEST(Siemens840D, AbsoluteAndIncrementalPerWord) {
   EXPECT_TRUE(near(e[1], 1.0, 8.0, 0.0));
 }
 
-TEST(Siemens840D, UnsupportedPocketCycleIsReportedWhereItIs) {
-  auto e = error_of("G71\nN20 G0 X0 Y0\nN30 POCKET3(10,0,1,-5,40,20,5,0,0,0,1,0.1,0.1,100,100,0,11,5)\nM30\n",
+TEST(Siemens840D, UnsupportedCyclesAreReportedWhereTheyAre) {
+  for (const char* cycle : {"SLOT1", "SLOT2", "LONGHOLE"}) {
+    auto e = error_of(std::string("G71\nN20 G0 X0 Y0\nN30 ") + cycle + "(10,0,1,-5,,4,20,50,40,30,0,90)\nM30\n",
+                      Dialect::Siemens840D);
+    EXPECT_EQ(e.where().line, 3u);
+    EXPECT_EQ(e.where().column, 5u);
+    EXPECT_NE(e.message().find(cycle), std::string::npos) << e.message();
+  }
+  // a pocket needs the tool's diameter; a helical infeed is not decomposed
+  auto e = error_of("G71\nN20 G0 X0 Y0\nN30 POCKET3(10,0,1,-5,40,20,5,0,0,0,1,0.1,0.1,100,100,0,1,5)\nM30\n",
                     Dialect::Siemens840D);
   EXPECT_EQ(e.where().line, 3u);
   EXPECT_EQ(e.where().column, 5u);
   EXPECT_NE(e.message().find("POCKET3"), std::string::npos);
+  EXPECT_NE(e.message().find("diameter"), std::string::npos) << e.message();
+  ncbridge::interpreter::Options options;
+  options.dialect = Dialect::Siemens840D;
+  ncbridge::setup::Tool mill;
+  mill.number = 1;
+  mill.type = ncbridge::setup::ToolType::FlatEndMill;
+  mill.diameter = 10.0;
+  mill.length = 50.0;
+  options.tools = ncbridge::setup::ToolList({mill});
+  Collect sink;
+  try {
+    ncbridge::interpreter::interpret_text(
+        "G71\nT1 D1 M6\nS1000 M3\nG0 X0 Y0 Z10\nN50 POCKET4(10,0,1,-5,20,0,0,2,0,0,100,100,0,11,5)\nM30\n",
+        "test.prog", options, sink);
+    ADD_FAILURE() << "no error for a helical infeed";
+  } catch (const InputError& h) {
+    EXPECT_EQ(h.where().line, 5u);
+    EXPECT_NE(h.message().find("POCKET4: helical"), std::string::npos) << h.message();
+  }
+}
+
+TEST(Siemens840D, SwivelAndPolarPoleErrorsAreLocated) {
+  auto e = error_of("G71\nN20 CYCLE800(1,\"TABLE\",0,57,0,0,0,0,30,0,0,0,0,-1,100,1)\nM30\n", Dialect::Siemens840D);
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 5u);
+  EXPECT_NE(e.message().find("CYCLE800 swivels the working plane (_B"), std::string::npos) << e.message();
+  e = error_of("G71\nN20 G111 AP=30 RP=10\nM30\n", Dialect::Siemens840D);
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 5u);
+  // no error for a CYCLE800 without rotation or offset
+  auto sink = run("G71\nN20 CYCLE800(1,\"TABLE\",0,57,0,0,0,0,0,0,0,0,0,-1,100,1)\nG0 X1\nM30\n", Dialect::Siemens840D);
+  EXPECT_EQ(sink.ends().size(), 1u);
 }
 
 TEST(Siemens840D, ErrorsAreLocated) {

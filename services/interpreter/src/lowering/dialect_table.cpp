@@ -69,9 +69,10 @@ DialectTable parse_dialect_table(const std::string& yaml_text, const std::string
         for (const auto& kv : cycle.second) words[kv.first.as<std::string>()] = kv.second.as<std::string>();
       }
     }
-    for (const char* section : {"cycles", "patterns"}) {
+    for (const char* section : {"cycles", "patterns", "milling_cycles"}) {
       if (!root[section]) continue;
-      auto& target = std::string(section) == "cycles" ? t.cycles : t.patterns;
+      const std::string which = section;
+      auto& target = which == "cycles" ? t.cycles : which == "patterns" ? t.patterns : t.milling_cycles;
       for (const auto& cycle : root[section]) {
         CycleEntry e;
         const YAML::Node& c = cycle.second;

@@ -31,6 +31,7 @@ struct DialectTable {
   std::map<std::string, std::map<std::string, std::string>> cycle_words;  // cycle -> word -> role
   std::map<std::string, CycleEntry> cycles;
   std::map<std::string, CycleEntry> patterns;     // Siemens HOLES1/HOLES2
+  std::map<std::string, CycleEntry> milling_cycles;  // Siemens POCKET3/POCKET4
   std::map<std::string, CodeEntry> path_functions;
   std::map<std::string, CodeEntry> radius_compensation;
   std::vector<std::string> unsupported_cycles;

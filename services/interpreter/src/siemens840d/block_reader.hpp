@@ -235,6 +235,7 @@ class Reader {
           std::size_t close = s_.find('"', pos_ + 1);
           if (close == std::string_view::npos) fail(pos_, "String not closed by '\"'");
           it.text = std::string(s_.substr(pos_ + 1, close - pos_ - 1));
+          it.arguments.push_back(kNoExpr);  // keeps the positions of the arguments after it
           pos_ = close + 1;
         } else {
           it.arguments.push_back(expression(out.exprs));

@@ -16,6 +16,7 @@
 #include "lowering/infix_expression.hpp"
 #include "ncbridge/common/error.hpp"
 #include "siemens840d/block_reader.hpp"
+#include "siemens840d/pocket_milling.hpp"
 
 namespace ncbridge::interpreter::siemens840d {
 
@@ -57,6 +58,7 @@ class Runner {
   bool return_from_subprogram();
   void cycle(const Item& call, const SBlock& b, bool modal_call);
   void hole_pattern(const Item& call, const SBlock& b);
+  void pocket(const Item& call, const SBlock& b);
   bool run_control(SBlock& b);
   std::string skip_structure(const std::vector<std::string>& opens, const std::vector<std::string>& ends,
                              std::uint32_t column);
@@ -83,6 +85,8 @@ class Runner {
 
   bool incremental_ = false;
   int motion_ = 0;  // 0, 1, 2, 3
+  Point3 pole_;                  // G110/G111/G112 (the workpiece origin until one is set)
+  double polar_radius_ = 0, polar_angle_ = 0;  // RP=, AP= (modal)
   int plane_ = 17;
   Point3 tangent_{1, 0, 0};
   bool have_tangent_ = false;
@@ -234,6 +238,7 @@ bool Runner::run_block(SBlock& b) {
   std::optional<std::string> frame_op;
   const Item* cycle_call = nullptr;
   const Item* pattern_call = nullptr;
+  const Item* milling_call = nullptr;
   bool mcall = false, program_return = false;
   std::string subprogram;
   std::optional<std::string> goto_label, goto_how;
@@ -263,15 +268,21 @@ bool Runner::run_block(SBlock& b) {
           cycle_call = &it;
         } else if (table_.patterns.count(n)) {
           pattern_call = &it;
+        } else if (table_.milling_cycles.count(n)) {
+          milling_call = &it;
         } else if (std::find(table_.unsupported_cycles.begin(), table_.unsupported_cycles.end(), n) != table_.unsupported_cycles.end()) {
           m_.fail(it.column, n + " is recognised but not supported: ncbridge does not invent its motion "
                                  "(post the program with explicit moves, or use CYCLE81-CYCLE89)");
         } else if (n == "CYCLE800") {
-          bool any = false;
-          for (ExprRef a : it.arguments) {
-            if (a != kNoExpr && eval(b, a) != 0.0) any = true;
+          // CYCLE800(_FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR, ...): a
+          // swivel of the working plane (5-axis) unless every offset and angle (positions 5-13) is 0
+          for (std::size_t i = 4; i < it.arguments.size() && i < 13; ++i) {
+            if (it.arguments[i] != kNoExpr && eval(b, it.arguments[i]) != 0.0) {
+              static const char* const kNames[] = {"_X0", "_Y0", "_Z0", "_A", "_B", "_C", "_X1", "_Y1", "_Z1"};
+              m_.fail(it.column, std::string("CYCLE800 swivels the working plane (") + kNames[i - 4] + " is not 0): "
+                                 "5-axis swivelling is not supported; only CYCLE800 without rotation or offset");
+            }
           }
-          if (any) m_.fail(it.column, "CYCLE800 with a swivel is not supported yet (only CYCLE800() resetting it)");
         } else if (std::find(table_.ignored_calls.begin(), table_.ignored_calls.end(), n) != table_.ignored_calls.end()) {
           // no effect on the canonical toolpath
         } else {
@@ -306,7 +317,7 @@ bool Runner::run_block(SBlock& b) {
     }
   }
   static const std::set<std::string> kWords = {"X", "Y", "Z", "A", "B", "C", "I", "J", "K", "I1", "J1", "K1", "CR",
-                                                "AR", "F", "S", "T", "D", "L", "P", "TURN", "RPL"};
+                                                "AR", "F", "S", "T", "D", "L", "P", "TURN", "RPL", "AP", "RP"};
   for (const auto& [name, item] : words) {
     if (!kWords.count(name)) m_.fail(item->column, "Address " + name + " is not supported");
   }
@@ -319,6 +330,8 @@ bool Runner::run_block(SBlock& b) {
 
   // G codes
   int g4 = 0;
+  std::string pole_how;
+  std::uint32_t pole_column = 0;
   for (const Item* g : gs) {
     double code = eval(b, g->value);
     const lowering::CodeEntry* e = table_.g(code);
@@ -330,6 +343,9 @@ bool Runner::run_block(SBlock& b) {
       incremental_ = meta == "incremental";
     } else if (meta == "dwell") {
       g4 = static_cast<int>(g->column);
+    } else if (meta == "pole_incremental" || meta == "pole_absolute" || meta == "pole_relative") {
+      pole_how = meta;
+      pole_column = g->column;
     } else if (meta == "suppress_frames_block") {
       g53 = true;
     } else if (meta == "work_offset_off") {
@@ -412,7 +428,38 @@ bool Runner::run_block(SBlock& b) {
     bool inc = mode == 'I' || (mode != 'A' && incremental_);
     return inc ? current + v : v;
   };
-  std::optional<double> x = axis("X", here.x), y = axis("Y", here.y), z = axis("Z", here.z);
+  // G110/G111/G112 X Y: the pole of polar coordinates (no motion)
+  if (!pole_how.empty()) {
+    if (words.count("AP") || words.count("RP")) m_.fail(pole_column, "A pole given in polar coordinates (AP=/RP= with G110-G112) is not supported");
+    Point3 base = pole_how == "pole_absolute" ? Point3{0, 0, 0} : pole_how == "pole_incremental" ? here : pole_;
+    auto pole_axis = [&](const char* n, double from) {
+      auto it = words.find(n);
+      if (it == words.end()) return pole_how == "pole_absolute" ? 0.0 : from;
+      const double v = eval(b, it->second->value);
+      // G111 is absolute (unless =IC()); G110 and G112 add to their reference point
+      const bool inc = pole_how != "pole_absolute" ? it->second->mode != 'A' : it->second->mode == 'I';
+      return inc ? from + v : v;
+    };
+    pole_ = {pole_axis("X", base.x), pole_axis("Y", base.y), 0};
+    polar_radius_ = std::hypot(here.x - pole_.x, here.y - pole_.y);
+    polar_angle_ = std::atan2(here.y - pole_.y, here.x - pole_.x) / kDeg;
+    words.erase("X");
+    words.erase("Y");
+    if (words.count("Z")) m_.fail(words["Z"]->column, "Z in a pole block (G110-G112) is not supported");
+  }
+  // AP= (angle, degrees) and RP= (radius) about the pole: both modal
+  std::optional<double> polar_x, polar_y;
+  if (words.count("AP") || words.count("RP")) {
+    if (plane_ != 17) m_.fail(words.count("AP") ? words["AP"]->column : words["RP"]->column, "Polar coordinates outside G17 are not supported");
+    if (words.count("X") || words.count("Y")) m_.fail(words.count("X") ? words["X"]->column : words["Y"]->column, "X/Y and AP=/RP= in one block");
+    if (auto ap = axis("AP", polar_angle_)) polar_angle_ = *ap;
+    if (auto rp = axis("RP", polar_radius_)) polar_radius_ = *rp;
+    if (polar_radius_ < 0) m_.fail(words.count("RP") ? words["RP"]->column : words["AP"]->column, "Negative polar radius RP");
+    polar_x = pole_.x + polar_radius_ * std::cos(polar_angle_ * kDeg);
+    polar_y = pole_.y + polar_radius_ * std::sin(polar_angle_ * kDeg);
+  }
+  std::optional<double> x = polar_x ? polar_x : axis("X", here.x), y = polar_y ? polar_y : axis("Y", here.y),
+                        z = axis("Z", here.z);
   bool has_axes = x || y || z || words.count("A") || words.count("B") || words.count("C");
   const std::uint32_t col = b.items.empty() ? 1 : b.items.front().column;
   if (supa || g53) {
@@ -424,7 +471,7 @@ bool Runner::run_block(SBlock& b) {
       nb.g(53, col);
       nb.g(motion_ == 1 ? 1 : 0, col);
     }
-  } else if (has_axes || ((cip || ct || motion_ == 2 || motion_ == 3) &&
+  } else if (has_axes || polar_x || ((cip || ct || motion_ == 2 || motion_ == 3) &&
                               (words.count("I") || words.count("J") || words.count("AR") || words.count("CR")))) {
     for (const char* n : {"A", "B", "C"}) {
       if (auto v = value_of(n)) {
@@ -478,6 +525,11 @@ bool Runner::run_block(SBlock& b) {
           cy = here.y + ny * k;
           cw = k < 0;
           have_centre = true;
+        } else if (polar_x) {
+          // G2/G3 AP= (RP=): about the pole
+          cx = pole_.x;
+          cy = pole_.y;
+          have_centre = true;
         } else if (words.count("I") || words.count("J")) {
           auto centre = [&](const char* n, double current) {
             auto it = words.find(n);
@@ -523,6 +575,10 @@ bool Runner::run_block(SBlock& b) {
   }
   if (m_.execute(nb)) return false;
 
+  if (milling_call) {
+    if (mcall) m_.fail(milling_call->column, "MCALL " + milling_call->name + ": a modal pocket cycle is not supported");
+    pocket(*milling_call, b);
+  }
   if (pattern_call) hole_pattern(*pattern_call, b);
   if (cycle_call) cycle(*cycle_call, b, mcall);
   else if (mcall) modal_cycle_.reset();
@@ -666,6 +722,21 @@ void Runner::hole_pattern(const Item& call, const SBlock& b) {
     if (m_.execute(nb)) return;
     if (modal_cycle_) run_cycle_here(call.column);
   }
+}
+
+void Runner::pocket(const Item& call, const SBlock& b) {
+  const lowering::CycleEntry& entry = table_.milling_cycles.at(call.name);
+  if (call.arguments.size() > entry.positional.size()) {
+    m_.fail(call.column, call.name + " takes at most " + std::to_string(entry.positional.size()) + " parameters");
+  }
+  std::map<std::string, double> args;
+  for (std::size_t i = 0; i < call.arguments.size(); ++i) {
+    if (call.arguments[i] != kNoExpr) args[entry.positional[i]] = eval(b, call.arguments[i]);
+  }
+  const setup::Tool* tool = options_.tools.find(m_.state().tool_in_spindle);
+  const double radius = tool ? tool->diameter / m_.state().mm_per_unit() / 2.0 : 0.0;
+  if (entry.meta == "rectangular_pocket") rectangular_pocket(m_, call.name, args, radius, call.column);
+  else circular_pocket(m_, call.name, args, radius, call.column);
 }
 
 void Runner::cycle(const Item& call, const SBlock& b, bool modal_call) {
