@@ -113,7 +113,10 @@ class Cc1Writer {
     s_.begin("WORKPLAN");
     s_.string(p_->main_workplan.its_id);
     s_.open_list();
-    executables_.for_each([&](InstanceId id) { s_.ref(id); });
+    executables_.for_each([&](InstanceId id) {
+      s_.ref(id);
+      s_.flush_if_full();
+    });
     s_.close_list();
     s_.unset();
     s_.ref(setup);

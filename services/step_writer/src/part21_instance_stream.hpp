@@ -56,7 +56,10 @@ class InstanceStream {
     char* p = separator(room(kSeparatorChars + 1 + kMaxIdChars));
     *p++ = '#';
     len_ = static_cast<std::size_t>(write_id(p, id) - buf_.get());
-    if (len_ >= kChunk) flush();  // a long list (a workplan's elements) is handed on as it goes
+  }
+  // Inside a long list (a workplan's elements), hands on what is made so far once it is a chunk.
+  void flush_if_full() {
+    if (len_ >= kChunk) flush();
   }
   void unset() { token("$"); }
   void string(std::string_view utf8) {
