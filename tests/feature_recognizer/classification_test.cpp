@@ -346,31 +346,12 @@ TEST(Recognition, FlatConcentricCirclesAreACircularPocket) {
   EXPECT_EQ(f.operations[0].strategy, fr::Strategy::ContourParallel);
 }
 
-// A contour around material that nothing else cuts, above the part bottom: the outside profile
-// of a boss, its top where the boss stands.
-TEST(Recognition, ContourAroundAStandingIslandIsTheBossOutsideProfile) {
-  ToolpathBuilder b;
-  b.workingstep(make_tool(1, ToolType::FlatEndMill, 10)).rapid(65, 40, 2);
-  for (double z : {-4.0, -8.0}) b.feed(65, 40, z).arc(65, 40, z, 50, 40, true);
-  b.rapid(65, 40, 5);
-  const auto& f = only(fr::recognize(b.steps(), block()));
-  EXPECT_EQ(f.type, fr::FeatureType::GeneralOutsideProfile);
-  EXPECT_NEAR(f.x, 50, 0.01);
-  EXPECT_NEAR(f.y, 40, 0.01);
-  EXPECT_NEAR(f.profile.diameter, 20, 0.05);
-  EXPECT_DOUBLE_EQ(f.top_z, 0);
-  EXPECT_DOUBLE_EQ(f.bottom_z, -8);
-  EXPECT_EQ(f.operations[0].strategy, fr::Strategy::Contour);
-}
-
-// Passes broken around an island (retract, move over, plunge again) are one layer per level,
-// and the levels one feature.
-TEST(Recognition, PassesBrokenAroundAnIslandAreOneFeature) {
-  ToolpathBuilder b;
-  b.workingstep(make_tool(1, ToolType::FlatEndMill, 10));
-  for (double z : {-3.0, -6.0}) {
+// Passes broken around an island at (50, 65) clear down to -8 around it (keeping the tool centre
+// 12 away), as a step or an open pocket with a boss in it is cleared.
+void clear_around_island(ToolpathBuilder& b) {
+  for (double z : {-4.0, -8.0}) {
     for (double y : {45.0, 53.0, 61.0, 69.0, 77.0, 85.0}) {
-      if (std::abs(y - 65) < 12) {  // the island at (50, 65), kept 12 from the tool centre
+      if (std::abs(y - 65) < 12) {
         const double h = std::sqrt(144 - (y - 65) * (y - 65));
         b.rapid(20, y, 2).feed(20, y, z).feed(50 - h, y, z).rapid(50 - h, y, 2);
         b.rapid(50 + h, y, 2).feed(50 + h, y, z).feed(80, y, z).rapid(80, y, 2);
@@ -379,10 +360,53 @@ TEST(Recognition, PassesBrokenAroundAnIslandAreOneFeature) {
       }
     }
   }
+}
+
+// Then a contour around the material left, that nothing else cuts, above the part bottom: the
+// outside profile of a boss, its top where the boss stands.
+TEST(Recognition, ContourAroundAStandingIslandIsTheBossOutsideProfile) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 10));
+  clear_around_island(b);
+  b.rapid(61.5, 65, 2);
+  for (double z : {-4.0, -8.0}) b.feed(61.5, 65, z).arc(61.5, 65, z, 50, 65, true);
+  b.rapid(61.5, 65, 5);
+  const auto features = fr::recognize(b.steps(), block());
+  ASSERT_EQ(features.size(), 2u);
+  EXPECT_EQ(features[0].type, fr::FeatureType::OpenPocket);
+  const auto& f = features[1];
+  EXPECT_EQ(f.type, fr::FeatureType::GeneralOutsideProfile);
+  EXPECT_NEAR(f.x, 50, 0.01);
+  EXPECT_NEAR(f.y, 65, 0.01);
+  EXPECT_NEAR(f.profile.diameter, 13, 0.05);
+  EXPECT_DOUBLE_EQ(f.top_z, 0);
+  EXPECT_DOUBLE_EQ(f.bottom_z, -8);
+  EXPECT_EQ(f.operations[0].strategy, fr::Strategy::Contour);
+}
+
+// The same contour into solid material: a hole bored by circular interpolation (its core
+// breaks loose as a chip), not a boss.
+TEST(Recognition, CircleIntoSolidMaterialIsABoredRoundHole) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 10)).rapid(65, 40, 2);
+  for (double z : {-4.0, -8.0}) b.feed(65, 40, z).arc(65, 40, z, 50, 40, true);
+  b.rapid(65, 40, 5);
+  const auto& f = only(fr::recognize(b.steps(), block()));
+  EXPECT_EQ(f.type, fr::FeatureType::RoundHole);
+  EXPECT_NEAR(f.diameter, 40, 0.01);
+  EXPECT_DOUBLE_EQ(f.bottom_z, -8);
+}
+
+// Passes broken around an island (retract, move over, plunge again) are one layer per level,
+// and the levels one feature.
+TEST(Recognition, PassesBrokenAroundAnIslandAreOneFeature) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 10));
+  clear_around_island(b);
   const auto features = fr::recognize(b.steps(), block());
   ASSERT_EQ(features.size(), 1u);
   EXPECT_EQ(features[0].type, fr::FeatureType::OpenPocket);
-  EXPECT_DOUBLE_EQ(features[0].bottom_z, -6);
+  EXPECT_DOUBLE_EQ(features[0].bottom_z, -8);
   EXPECT_EQ(features[0].operations.size(), 1u);
   EXPECT_EQ(features[0].operations[0].layers, 2);
 }

@@ -175,6 +175,18 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
     }
   }
   if (!island || island_area < 1.0 || ring_width > 1.5 * tool_diameter) return std::nullopt;
+  // Around a boss the material is cleared too (or it is the part's edge); a ring cut into solid
+  // material is a hole bored by circular interpolation, its core a chip.
+  Region ring_fill;
+  for (const auto& pwh : group.area.polygons()) {
+    if (Region::polygon(pwh.outer).intersected(*island).area() > 0) ring_fill = Region::polygon(pwh.outer);
+  }
+  const Region outside = boundary_band(ring_fill, 0.25 * tool_diameter, 0.01).minus(ring_fill);
+  Region cleared = outside.minus(part.outline);
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (g != group_index && boxes_overlap(outside.bbox(), groups[g].area.bbox())) cleared = cleared.united(outside.intersected(groups[g].area));
+  }
+  if (cleared.area() < 0.5 * outside.area()) return std::nullopt;
   // Cuts above the group's highest level (a face over the boss) leave it standing.
   double highest = group.floor;
   for (auto i : group.layers()) highest = std::max(highest, layers[i].z);
