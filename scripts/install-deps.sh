@@ -8,6 +8,7 @@ packages=(
   protobuf-compiler libprotobuf-dev
   cyclonedds-dev cyclonedds-tools
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev
+  libpolyclipping-dev  # Clipper: the recogniser's integer-grid Boolean operations
   libspdlog-dev libfmt-dev
   libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev

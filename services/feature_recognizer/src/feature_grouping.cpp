@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "box_index.hpp"
+
 namespace ncbridge::feature_recognizer {
 
 std::vector<std::size_t> MillingGroup::layers() const {
@@ -32,6 +34,8 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
     fill_boxes.push_back(fills.back().bbox());
     fill_areas.push_back(fills.back().area());
   }
+  // Earlier groups by box, so a layer meets the few groups near it, not all of them.
+  BoxIndex group_index(kIndexCell);
   auto may_match = [&](std::size_t i, std::size_t g) {
     const double a = fill_areas[i], b = group_areas[g];
     return boxes_overlap(fill_boxes[i], group_boxes[g]) && std::min(a, b) >= kSameFeatureOverlap * std::max(a, b);
@@ -46,6 +50,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
       group.area = group.area.united(layer.area);
       group.filled = group.filled.united(fills[i]);
       group_boxes.at(g) = box_union(group_boxes.at(g), fill_boxes[i]);
+      if (group_boxes[g]) group_index.insert(g, *group_boxes[g]);
       group_areas.at(g) = group.filled.area();
       group.floor = std::min(group.floor, layer.z);
       last_group = g;
@@ -65,7 +70,9 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
     // A later operation on an earlier feature: same region, not deeper than its floor beyond
     // the finishing allowance.
     bool attached = false;
-    for (std::size_t g = groups.size(); g-- > 0;) {
+    const auto near = fill_boxes[i] ? group_index.candidates(*fill_boxes[i]) : std::vector<std::size_t>{};
+    for (auto it = near.rbegin(); it != near.rend(); ++it) {
+      const std::size_t g = *it;
       auto& group = groups[g];
       if (group.freeform != layer.freeform) continue;
       if (layer.z < group.floor - finishing_allowance) continue;

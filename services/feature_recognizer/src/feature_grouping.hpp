@@ -27,6 +27,9 @@ struct MillingGroup {
 // ratio (intersection over union).
 inline constexpr double kSameFeatureOverlap = 0.5;
 
+// Cell of the box indexes that find the features near a layer or a cut, mm.
+inline constexpr double kIndexCell = 25.0;
+
 std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance);
 
 }  // namespace ncbridge::feature_recognizer

@@ -4,13 +4,14 @@
 // highest level that material reaches over its own area before it is cut.
 #include <vector>
 
+#include "box_index.hpp"
 #include "region.hpp"
 
 namespace ncbridge::feature_recognizer {
 
 class MaterialModel {
  public:
-  explicit MaterialModel(double stock_top) : stock_top_(stock_top) {}
+  explicit MaterialModel(double stock_top) : stock_top_(stock_top), index_(kCell) {}
 
   // Records that the area `area` was cut down to `floor` by the cut number `order`.
   void add_cut(const Region& area, double floor, std::size_t order);
@@ -29,8 +30,12 @@ class MaterialModel {
     std::size_t order;
     std::optional<Box2> box;  // of `area`: cuts elsewhere change nothing here
   };
+  static constexpr double kCell = 25.0;  // mm, of the index of the cuts' boxes
+  // The earlier cuts whose boxes overlap `box` (or contain a point), in the order they were made.
+  std::vector<const Cut*> cuts_near(const Box2& box) const;
   double stock_top_;
   std::vector<Cut> cuts_;
+  BoxIndex index_;
 };
 
 }  // namespace ncbridge::feature_recognizer

@@ -1,6 +1,7 @@
 #pragma once
 // A planar point set (the cutting area of a tool, the stock's outline, ...) as an immutable
-// value. Boolean operations are exact (CGAL, exact constructions); only region.cpp sees CGAL.
+// value. Coordinates live on a grid of kGrid mm, where Boolean operations are exact; each
+// operation rounds the vertices it creates to the grid (region.cpp states the bound).
 #include <memory>
 #include <optional>
 #include <vector>
@@ -8,6 +9,9 @@
 #include "ncbridge/feature_recognizer/feature.hpp"
 
 namespace ncbridge::feature_recognizer {
+
+// Grid of the integer coordinates, mm: 1 nm, 10,000 times below the recogniser's 0.01 mm budget.
+inline constexpr double kGrid = 1e-6;
 
 using Ring = std::vector<Point2>;  // a closed polygon, last point not repeated
 
@@ -28,12 +32,14 @@ class Region {
   static Region polygon(const Ring& ring);  // a simple polygon, either orientation
   static Region rectangle(const Box2& box);
   static Region union_of(const std::vector<Ring>& polygons);  // simple polygons
+  // Boundaries as polygons() gives them (outer rings and their holes, any orientation).
+  static Region from_polygons(const std::vector<PolygonWithHoles>& polygons);
 
   Region united(const Region& other) const;
   Region intersected(const Region& other) const;
   Region minus(const Region& other) const;
   Region filled() const;  // every hole closed
-  Region translated(double dx, double dy) const;  // exact
+  Region translated(double dx, double dy) const;  // the shift rounded to the grid, then exact
 
   bool empty() const;
   // The same value object (copies of one region): A ∪ A = A ∩ A = A and A − A = ∅ need no
@@ -57,6 +63,8 @@ double overlap_ratio(const Region& a, const Region& b);
 // Whether two boxes share more than a boundary (regions in disjoint boxes share no area): the
 // cheap test that keeps large programs from comparing every feature with every other exactly.
 bool boxes_overlap(const std::optional<Box2>& a, const std::optional<Box2>& b);
+// Whether two boxes are apart, not even touching.
+bool boxes_apart(const std::optional<Box2>& a, const std::optional<Box2>& b);
 std::optional<Box2> box_union(const std::optional<Box2>& a, const std::optional<Box2>& b);
 
 }  // namespace ncbridge::feature_recognizer

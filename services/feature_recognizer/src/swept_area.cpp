@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "exact_union.hpp"
+
 namespace ncbridge::feature_recognizer {
 
 int circle_vertex_count(double radius, double tolerance) {
@@ -93,7 +95,7 @@ Region swept_area(const std::vector<std::vector<Point2>>& polylines, double radi
     if (pts.size() == 1) pieces.push_back(stadium(pts[0], pts[0], radius, tolerance));
     for (std::size_t i = 1; i < pts.size(); ++i) pieces.push_back(stadium(pts[i - 1], pts[i], radius, tolerance));
   }
-  return Region::union_of(pieces);
+  return exact_union(pieces);
 }
 
 Region boundary_band(const Region& region, double radius, double tolerance) {

@@ -1,0 +1,33 @@
+#pragma once
+// Which of many boxes may overlap a given one: boxes are filed in the cells of a uniform grid
+// they cover, so a query reads a few cells instead of every box. Large programs recognise
+// thousands of features, and comparing each with every earlier one grew quadratically.
+#include <cstddef>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "region.hpp"
+
+namespace ncbridge::feature_recognizer {
+
+class BoxIndex {
+ public:
+  explicit BoxIndex(double cell_size) : cell_(cell_size) {}
+
+  // Files `id` under `box`; filing an id again under a larger box (a growing feature) is fine.
+  void insert(std::size_t id, const Box2& box);
+
+  // Every id filed under a box that touches or overlaps `box` (and maybe a few more), ascending
+  // and unique: callers still test the boxes themselves.
+  std::vector<std::size_t> candidates(const Box2& box) const;
+
+ private:
+  using Cell = std::pair<long long, long long>;
+  bool cell_range(const Box2& box, Cell& lo, Cell& hi) const;  // false: too many cells
+  double cell_;
+  std::map<Cell, std::vector<std::size_t>> cells_;
+  std::vector<std::size_t> wide_;  // boxes over too many cells to file: always candidates
+};
+
+}  // namespace ncbridge::feature_recognizer
