@@ -4,8 +4,12 @@
 
 #include <cmath>
 #include <map>
+#include <fstream>
+#include <filesystem>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
@@ -213,6 +217,58 @@ TEST(Fanuc, TappingAndBoringErrorsAreLocated) {
   e = error_of("G21 G90\nG0 Z30.\nG76 X10. Y10. Z-12. R3. Q1. F80\nM30\n", Dialect::Fanuc);
   EXPECT_EQ(e.where().line, 3u);
   EXPECT_NE(e.message().find("Spindle not turning in G76"), std::string::npos) << e.message();
+}
+
+// Programs are read as streams (a line at a time, jumps seek back by file offset): loops and
+// jumps across many lines, CRLF line ends and a last line without one, from a file and from text.
+TEST(DialectStreams, JumpsAcrossLongProgramsFromFileAndText) {
+  std::string fanuc = "G21 G90\r\n#1=0\r\nN1 G0 X[#1]\r\n";
+  for (int i = 0; i < 700; ++i) fanuc += "(FILLER " + std::to_string(i) + ")\r\n";
+  fanuc += "#1=#1+1\r\nIF [#1 LT 3] GOTO 1\r\nGOTO 5\r\nN4 G0 X99.\r\n";
+  for (int i = 0; i < 300; ++i) fanuc += "(MORE)\r\n";
+  fanuc += "N5 G0 Y7.\r\nM98 P9\r\nM30\r\n";
+  for (int i = 0; i < 600; ++i) fanuc += "(AFTER)\r\n";
+  fanuc += "O9\r\nG0 Z1.\r\nM99";
+  std::string heidenhain = "0 BEGIN PGM T MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n2 CALL LBL 7\n3 CALL LBL 7\n";
+  for (int i = 0; i < 900; ++i) heidenhain += "; filler\n";
+  heidenhain += "4 END PGM T MM\n5 LBL 7\n6 L IX+2 R0 FMAX\n7 LBL 0";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("ncbridge_streams_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  for (bool from_file : {false, true}) {
+    ncbridge::interpreter::Options options;
+    options.dialect = Dialect::Fanuc;
+    Collect f;
+    Collect h;
+    if (from_file) {
+      std::ofstream(dir / "long.nc", std::ios::binary) << fanuc;
+      std::ofstream(dir / "long.h", std::ios::binary) << heidenhain;
+      ncbridge::interpreter::interpret_file(dir / "long.nc", options, f);
+      options.dialect = Dialect::Heidenhain;
+      ncbridge::interpreter::interpret_file(dir / "long.h", options, h);
+    } else {
+      f = run(fanuc, Dialect::Fanuc);
+      h = run(heidenhain, Dialect::Heidenhain);
+    }
+    auto e = f.ends();
+    ASSERT_EQ(e.size(), 5u) << (from_file ? "file" : "text");
+    EXPECT_TRUE(near(e[0], 0, 0, 0));
+    EXPECT_TRUE(near(e[1], 1, 0, 0));
+    EXPECT_TRUE(near(e[2], 2, 0, 0));
+    EXPECT_TRUE(near(e[3], 2, 7, 0));
+    EXPECT_TRUE(near(e[4], 2, 7, 1));
+    // the source lines of the calls are the file's line numbers: the subprogram's move on line
+    // 1612, the program end (M30) on line 1010
+    for (const auto& c : f.calls) {
+      if (auto* t = std::get_if<ncbridge::canonical::StraightTraverse>(&c.data); t && t->end.z == 1.0) {
+        EXPECT_EQ(c.source.line, 3u + 700u + 4u + 300u + 3u + 600u + 2u);
+      }
+    }
+    EXPECT_EQ(f.calls.back().source.line, 1010u);
+    auto g = h.ends();
+    ASSERT_EQ(g.size(), 3u);
+    EXPECT_TRUE(near(g[2], 4, 0, 0));
+  }
+  std::filesystem::remove_all(dir);
 }
 
 // ---- Mach3

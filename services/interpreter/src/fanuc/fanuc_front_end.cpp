@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <tuple>
 
 #include "block_model.hpp"
 #include "expression.hpp"
@@ -34,9 +35,21 @@ constexpr std::size_t kMaxCallDepth = 32;
 
 struct File {
   ProgramText text;
-  std::map<long, std::size_t> programs;               // O number -> line index
-  std::multimap<long, std::size_t> sequence_numbers;  // N number -> line index
+  std::map<long, std::size_t> programs;  // O number -> line index
 };
+
+// The number after a leading O or N of a line ("N120 G1 ..." -> 'N', 120), or letter 0.
+std::pair<char, long> leading_number(std::string_view l) {
+  std::size_t p = 0;
+  while (p < l.size() && (l[p] == ' ' || l[p] == '\t')) ++p;
+  if (p + 1 >= l.size()) return {0, 0};
+  const char c = lowering::upper(l[p]);
+  if ((c != 'O' && c != 'N') || !lowering::is_digit(l[p + 1])) return {0, 0};
+  ++p;
+  long number = 0;
+  while (p < l.size() && lowering::is_digit(l[p]) && number < 100000000) number = number * 10 + (l[p++] - '0');
+  return {c, number};
+}
 
 // Fanuc G65 argument specification I: address -> local variable.
 int argument_variable(char letter) {
@@ -105,6 +118,7 @@ class Runner {
   std::size_t file_ = 0, pc_ = 0;
   std::vector<Call> calls_;
   std::vector<Loop> loops_;
+  std::map<std::tuple<std::size_t, std::size_t, long>, std::size_t> goto_targets_;  // (file, from, N) -> line
   bool seen_content_ = false;
   std::uint64_t steps_ = 0;
   std::size_t last_index_ = 0;
@@ -129,17 +143,8 @@ std::size_t Runner::add_file(ProgramText text) {
   File f;
   f.text = std::move(text);
   for (std::size_t i = 0; i < f.text.size(); ++i) {
-    std::string_view l = f.text.line(i);
-    std::size_t p = 0;
-    while (p < l.size() && (l[p] == ' ' || l[p] == '\t')) ++p;
-    if (p >= l.size()) continue;
-    char c = lowering::upper(l[p]);
-    if ((c == 'O' || c == 'N') && p + 1 < l.size() && lowering::is_digit(l[p + 1])) {
-      ++p;
-      long number = 0;
-      while (p < l.size() && lowering::is_digit(l[p]) && number < 100000000) number = number * 10 + (l[p++] - '0');
-      if (c == 'O') f.programs.emplace(number, i); else f.sequence_numbers.emplace(number, i);
-    }
+    const auto [letter, number] = leading_number(f.text.line(i));
+    if (letter == 'O') f.programs.emplace(number, i);
   }
   files_.push_back(std::move(f));
   std::size_t index = files_.size() - 1;
@@ -286,13 +291,23 @@ void Runner::jump_to_sequence(double n, std::uint32_t column, std::size_t in_fil
   for (const auto& [number, line] : f.programs) {
     if (line >= pc_ && line < end) end = line;
   }
-  auto [first, last] = f.sequence_numbers.equal_range(target);
+  // The program is read as a stream: the search reads the lines (forward from here to the end
+  // of the program, then from its start); a jump taken again (a loop) is remembered.
+  const auto key = std::make_tuple(in_file, pc_, target);
   std::optional<std::size_t> best;
-  for (auto it = first; it != last; ++it) {
-    if (it->second >= pc_ && it->second < end && (!best || it->second < *best)) best = it->second;
-  }
-  for (auto it = first; it != last && !best; ++it) {
-    if (it->second >= begin && it->second < end) best = it->second;
+  if (auto hit = goto_targets_.find(key); hit != goto_targets_.end()) {
+    best = hit->second;
+  } else {
+    auto search = [&](std::size_t from, std::size_t to) -> std::optional<std::size_t> {
+      for (std::size_t i = from; i < to; ++i) {
+        const auto [letter, number] = leading_number(f.text.line(i));
+        if (letter == 'N' && number == target) return i;
+      }
+      return std::nullopt;
+    };
+    best = search(pc_, end);
+    if (!best) best = search(begin, std::min(pc_, end));
+    if (best && goto_targets_.size() < 4096) goto_targets_.emplace(key, *best);
   }
   if (!best) m_.fail(column, "GOTO " + std::to_string(target) + ": no block N" + std::to_string(target) + " in this program");
   // leaving loops whose range the jump leaves is what the controller does implicitly
