@@ -12,28 +12,40 @@ int circle_vertex_count(double radius, double tolerance) {
   if (radius <= tolerance) return 8;
   const double half_angle = std::acos(1.0 - tolerance / radius);
   const int n = static_cast<int>(std::ceil(std::numbers::pi / half_angle));
-  return std::clamp(n + (n % 2), 8, 720);
+  return std::clamp((n + 3) / 4 * 4, 8, 720);  // a multiple of 4: walls along x and y lie at the full radius
 }
 
 Ring stadium(Point2 a, Point2 b, double radius, double tolerance) {
+  // One polygonal disk for every position (vertices at fixed angles, whatever the segment's
+  // direction): where paths of two layers pass the same points their swept areas have the same
+  // vertices, and a move inside an area already swept adds nothing, not slivers between
+  // differently turned polygons. The stadium is the convex hull of the disk at a and at b.
   const int n = circle_vertex_count(radius, tolerance);
   const double step = 2 * std::numbers::pi / n;
+  std::vector<Point2> disk;
+  disk.reserve(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) disk.push_back({radius * std::cos(i * step), radius * std::sin(i * step)});
   Ring ring;
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  if (std::hypot(dx, dy) < 1e-9) {
-    for (int i = 0; i < n; ++i) ring.push_back({a.x + radius * std::cos(i * step), a.y + radius * std::sin(i * step)});
+  if (std::hypot(b.x - a.x, b.y - a.y) < 1e-9) {
+    for (const auto& v : disk) ring.push_back({a.x + v.x, a.y + v.y});
     return ring;
   }
-  const double dir = std::atan2(dy, dx);
-  const int half = n / 2;
-  // Around b from dir-90° to dir+90°, then around a from dir+90° to dir+270°: counter-clockwise.
-  for (int i = 0; i <= half; ++i) {
-    const double t = dir - std::numbers::pi / 2 + i * step;
-    ring.push_back({b.x + radius * std::cos(t), b.y + radius * std::sin(t)});
-  }
-  for (int i = 0; i <= half; ++i) {
-    const double t = dir + std::numbers::pi / 2 + i * step;
-    ring.push_back({a.x + radius * std::cos(t), a.y + radius * std::sin(t)});
+  std::vector<Point2> pts;
+  pts.reserve(2 * disk.size());
+  for (const auto& v : disk) pts.push_back({a.x + v.x, a.y + v.y}), pts.push_back({b.x + v.x, b.y + v.y});
+  std::sort(pts.begin(), pts.end(), [](const Point2& p, const Point2& q) { return p.x < q.x || (p.x == q.x && p.y < q.y); });
+  // Andrew's monotone chain: lower hull then upper hull, counter-clockwise, collinear points out.
+  auto cross = [](const Point2& o, const Point2& p, const Point2& q) {
+    return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x);
+  };
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t base = ring.size();
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      const auto& p = pass == 0 ? pts[k] : pts[pts.size() - 1 - k];
+      while (ring.size() >= base + 2 && cross(ring[ring.size() - 2], ring.back(), p) <= 0) ring.pop_back();
+      ring.push_back(p);
+    }
+    ring.pop_back();  // the last point starts the other chain
   }
   return ring;
 }
