@@ -63,16 +63,21 @@ interpreter::Dialect dialect_of(const std::string& name) {
   return interpreter::Dialect::Rs274Ngc;
 }
 
-// Forwards the stream to the builder, timing the builder's share and showing progress on a
-// terminal.
+// Forwards the stream to the builder, timing the builder's share when a report wants it (two
+// clock readings a call cost a few percent) and showing progress on a terminal.
 class TimedSink final : public canonical::Sink {
  public:
-  TimedSink(cc1_builder::Cc1Builder& builder, bool progress) : builder_(builder), progress_(progress) {}
+  TimedSink(cc1_builder::Cc1Builder& builder, bool progress, bool timed)
+      : builder_(builder), progress_(progress), timed_(timed) {}
   void source_file(std::uint32_t index, std::string_view path) override { builder_.source_file(index, path); }
   void call(const canonical::Call& c) override {
-    const auto start = Clock::now();
-    builder_.call(c);
-    spent_ += Clock::now() - start;
+    if (timed_) {
+      const auto start = Clock::now();
+      builder_.call(c);
+      spent_ += Clock::now() - start;
+    } else {
+      builder_.call(c);
+    }
     if (progress_ && (++calls_ & 0xFFFF) == 0) {
       std::fprintf(stderr, "\rconverting: line %u, %llu canonical calls", c.source.line,
                    static_cast<unsigned long long>(calls_));
@@ -94,21 +99,25 @@ class TimedSink final : public canonical::Sink {
 
  private:
   cc1_builder::Cc1Builder& builder_;
-  bool progress_;
+  bool progress_, timed_;
   bool shown_ = false;
   std::uint64_t calls_ = 0;
   Clock::duration spent_{};
 };
 
-// Streamed CC1: each finished workplan element goes to the Part 21 writer and the report, timed
+// Streamed CC1: each finished workplan element goes to the Part 21 writer and, timed, the report
 // (the builder's clock runs around it too).
 class ElementWriter final : public cc1_builder::WorkplanSink {
  public:
   ElementWriter(step_writer::StepncStreamWriter& writer, Cc1Report* report) : writer_(writer), report_(report) {}
   void element(const stepnc::Project& project, const stepnc::Executable& element) override {
+    if (!report_) {
+      writer_.element(project, element);
+      return;
+    }
     const auto start = Clock::now();
     writer_.element(project, element);
-    if (report_) report_->element(project, element);
+    report_->element(project, element);
     spent_ += Clock::now() - start;
   }
   Clock::duration spent() const { return spent_; }
@@ -243,7 +252,7 @@ int run_streamed_cc1(const ConvertArguments& args, Clock::time_point t0) {
   if (!args.report.empty()) report.emplace(args.report, Cc1Report::Head{args.program, args.output, args.level});
   ElementWriter elements(writer, report ? &*report : nullptr);
   cc1_builder::Cc1Builder builder(options, &elements);
-  TimedSink sink(builder, isatty(STDERR_FILENO) != 0);
+  TimedSink sink(builder, isatty(STDERR_FILENO) != 0, report.has_value());
   const auto t_interpret = Clock::now();
   interpret(args, interp, sink);
   const auto t_built = Clock::now();
@@ -300,7 +309,7 @@ int run_convert(const ConvertArguments& args) {
     const cc1_builder::Options options = builder_options(args, stock);
     const interpreter::Options interp = interpreter_options(args, options.tools);
     cc1_builder::Cc1Builder builder(options);
-    TimedSink sink(builder, isatty(STDERR_FILENO) != 0);
+    TimedSink sink(builder, isatty(STDERR_FILENO) != 0, !args.report.empty());
     t_interpret = Clock::now();
     interpret(args, interp, sink);
     t_built = Clock::now();

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <functional>
+#include <unordered_map>
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
@@ -76,9 +77,20 @@ Bits3 bits_of(double x, double y, double z) {
 }
 
 // A named placement's (or plane's) exact value and name (as an index into the names seen).
-using PlacementKey = part21::RecentInstances<10>::Key;
+using PlacementKey = std::array<std::uint64_t, 10>;
+struct PlacementKeyHash {
+  std::size_t operator()(const PlacementKey& key) const {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (std::uint64_t w : key) {
+      h ^= w;
+      h *= 0xFF51AFD7ED558CCDull;
+      h ^= h >> 32;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
 PlacementKey key_of(std::uint64_t name, const sn::Axis2Placement3d& a) {
-  using R = part21::RecentInstances<10>;
+  using R = part21::RecentInstances<3>;
   return {R::bits(a.location.x), R::bits(a.location.y), R::bits(a.location.z), R::bits(a.axis.x), R::bits(a.axis.y),
           R::bits(a.axis.z), R::bits(a.ref_direction.x), R::bits(a.ref_direction.y), R::bits(a.ref_direction.z), name};
 }
@@ -194,9 +206,11 @@ class Cc1Writer {
     s_.ref(ref_direction);
     return s_.end();
   }
-  // Named placements and planes (security plane, feature placement, depth planes, setups), like
-  // the unnamed placements of arcs, are shared while remembered (a large memory: programs
-  // return to few depths and places, but a streamed file must not remember them all).
+  // Named placements and planes (security plane, feature placement, depth planes, setups) are
+  // shared exactly, the first kNamedShared distinct values of each: programs return to few
+  // depths and places, but a streamed file must not remember every one of a pathological
+  // program (later new values are written where used). Unnamed placements of arcs are shared
+  // while remembered.
   std::uint64_t name_index(std::string_view name) {
     for (std::size_t i = 0; i < names_.size(); ++i) {
       if (names_[i] == name) return i;
@@ -206,20 +220,20 @@ class Cc1Writer {
   }
   InstanceId placement(const sn::Axis2Placement3d& a, std::string_view name) {
     const PlacementKey key = key_of(name_index(name), a);
-    if (const InstanceId id = placements_.find(key)) return id;
+    if (auto it = placements_.find(key); it != placements_.end()) return it->second;
     const InstanceId id = new_placement(a, name);
-    placements_.remember(key, id);
+    if (placements_.size() < kNamedShared) placements_.emplace(key, id);
     return id;
   }
   InstanceId plane(const sn::Plane& pl, std::string_view name) {
     const PlacementKey key = key_of(name_index(name), pl.position);
-    if (const InstanceId id = planes_.find(key)) return id;
+    if (auto it = planes_.find(key); it != planes_.end()) return it->second;
     const InstanceId position = placement(pl.position, name);
     s_.begin("PLANE");
     s_.string(name);
     s_.ref(position);
     const InstanceId id = s_.end();
-    planes_.remember(key, id);
+    if (planes_.size() < kNamedShared) planes_.emplace(key, id);
     return id;
   }
   InstanceId arc_placement(const sn::Axis2Placement3d& a) {
@@ -743,8 +757,9 @@ class Cc1Writer {
   std::vector<sn::OperationRef> feature_ops_;
   std::vector<InstanceId> tools_, technologies_, functions_, operations_, features_;  // 0: not written yet
   std::vector<std::string> names_;  // of named placements and planes (few: ids of setups and workpieces, roles)
-  part21::RecentInstances<10> placements_{12}, planes_{12};
-  part21::RecentInstances<3> points_{14}, directions_{10}, arc_placements_{10};
+  static constexpr std::size_t kNamedShared = 16384;
+  std::unordered_map<PlacementKey, InstanceId, PlacementKeyHash> placements_, planes_;
+  part21::RecentInstances<3> points_{12}, directions_{10}, arc_placements_{10};
   part21::RecentInstances<2> circles_{10};
   // Scratch lists, one per level of nesting (curve <- toolpath list <- operation <- feature).
   std::vector<InstanceId> polyline_points_, segment_ids_, trajectory_ids_, feature_operation_ids_;

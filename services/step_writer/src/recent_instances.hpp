@@ -23,7 +23,10 @@ class RecentInstances {
   // The instance remembered for `key`, or 0.
   InstanceId find(const Key& key) const {
     const Slot& s = slots_[index(key)];
-    return s.id != 0 && s.key == key ? s.id : 0;
+    for (std::size_t i = 0; i < N; ++i) {  // not std::array's ==, which calls memcmp
+      if (s.key[i] != key[i]) return 0;
+    }
+    return s.id;
   }
   void remember(const Key& key, InstanceId id) { slots_[index(key)] = Slot{key, id}; }
 
