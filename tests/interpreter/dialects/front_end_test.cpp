@@ -206,6 +206,13 @@ TEST(Fanuc, TappingAndBoringCyclesTagTheirHoles) {
   EXPECT_TRUE(shifted);
 }
 
+TEST(Fanuc, CycleRepeatsBeyondTheIterationLimitAreAnError) {
+  auto e = error_of("G21 G90\nS400 M3\nG0 Z30.\nG91 G81 X1. Z-2. R-1. F80 K1000000000\nM30\n", Dialect::Fanuc);
+  EXPECT_EQ(e.where().line, 4u);
+  EXPECT_EQ(e.where().column, 27u);  // the K word
+  EXPECT_NE(e.message().find("iteration limit"), std::string::npos) << e.message();
+}
+
 TEST(Fanuc, TappingAndBoringErrorsAreLocated) {
   auto e = error_of("G21 G90\nS400 M3\nG0 Z30.\nG99 G74 X10. Y10. Z-12. R3. F280\nM30\n", Dialect::Fanuc);
   EXPECT_EQ(e.where().line, 4u);
@@ -341,6 +348,27 @@ TEST(Siemens840D, UnsupportedCyclesAreReportedWhereTheyAre) {
   } catch (const InputError& h) {
     EXPECT_EQ(h.where().line, 5u);
     EXPECT_NE(h.message().find("POCKET4: helical"), std::string::npos) << h.message();
+  }
+}
+
+TEST(Siemens840D, PocketWithMorePassesThanTheIterationLimitIsAnError) {
+  ncbridge::interpreter::Options options;
+  options.dialect = Dialect::Siemens840D;
+  options.max_loop_iterations = 1000;
+  ncbridge::setup::Tool mill;
+  mill.number = 1;
+  mill.diameter = 10.0;
+  mill.length = 50.0;
+  options.tools = ncbridge::setup::ToolList({mill});
+  Collect sink;
+  try {
+    ncbridge::interpreter::interpret_text(
+        "G71\nT1 D1 M6\nS1000 M3\nG0 X0 Y0 Z10\nN50 POCKET4(10,0,1,-5,20,0,0,0.001,0,0,100,100,0,1,0.001)\nM30\n",
+        "test.prog", options, sink);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 5u);
+    EXPECT_NE(e.message().find("iteration limit"), std::string::npos) << e.message();
   }
 }
 

@@ -729,7 +729,7 @@ void Runner::lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w) {
     if (role == "retract_plane") cycle_r_ = last_r_ = v.v;
     else if (role == "bottom") cycle_z_ = v.v;
     else if (role == "peck" || role == "shift") cycle_q_ = last_q_ = v.v;
-    else if (role == "repeat") repeats = static_cast<int>(std::lround(v.raw));
+    else if (role == "repeat") repeats = v.raw > 2e9 ? 2'000'000'000 : v.raw < -2e9 ? -1 : static_cast<int>(std::lround(v.raw));
     else if (role == "dwell") {
       if (v.had_point) {
         m_.comment("ncbridge: P" + std::to_string(v.v) + " has a decimal point: read as seconds (Fanuc takes P in ms)");
@@ -756,6 +756,10 @@ void Runner::lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w) {
     cycle_q_ = last_q_;
   }
   if (repeats < 0) m_.fail(w.count('k') ? w.at('k').column : col, "Negative repeat count");
+  if (static_cast<std::uint64_t>(repeats) > options_.max_loop_iterations) {
+    m_.fail(w.count('k') ? w.at('k').column : w.at('l').column,
+            "K asks for more repeats than the iteration limit (" + std::to_string(options_.max_loop_iterations) + ")");
+  }
   if (repeats == 0) return;  // K0: store the cycle data, drill nothing
 
   Point3 here = m_.position();

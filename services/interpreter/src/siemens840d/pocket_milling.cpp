@@ -59,6 +59,15 @@ class PocketCut {
   }
   [[noreturn]] void fail(const std::string& what) const { m_.fail(column_, name_ + ": " + what); }
 
+  // Layers times rings within the interpreter's iteration limit (a tiny MID or MIDA is an error,
+  // not hours of moves).
+  void check_passes(std::size_t layers, std::size_t rings) const {
+    const double passes = static_cast<double>(layers) * static_cast<double>(rings);
+    if (passes > static_cast<double>(m_.options().max_loop_iterations)) {
+      fail("MID/MIDA ask for " + std::to_string(static_cast<long long>(passes)) +
+           " passes, more than the iteration limit (" + std::to_string(m_.options().max_loop_iterations) + ")");
+    }
+  }
   double tool_radius() const { return tool_radius_; }
   double allowance() const { return allowance_; }
   double step() const { return step_; }
@@ -71,7 +80,7 @@ class PocketCut {
     const double total = rfp_ - bottom;
     int n = mid > 0 ? static_cast<int>(std::ceil(total / mid - 1e-9)) : 1;
     n = std::max(n, 1);
-    if (n > 10000) fail("MID too small: more than 10000 layers");
+    if (!(total / std::max(mid, 1e-300) < 1e6) && mid > 0) fail("MID too small: more than a million layers");
     std::vector<double> out;
     for (int k = 1; k <= n; ++k) out.push_back(rfp_ - total * k / n);
     return out;
@@ -133,7 +142,9 @@ class PocketCut {
 // Insets of the rings from the innermost (`widest`, where the ring closes to a line or a point)
 // out to the final contour (0), at most `step` apart.
 std::vector<double> ring_insets(double widest, double step) {
-  const int n = std::max(1, static_cast<int>(std::ceil(widest / step - 1e-9)));
+  const double count = std::ceil(widest / step - 1e-9);
+  if (!(count < 1e6)) return {};  // the caller's pass check refuses it
+  const int n = std::max(1, static_cast<int>(count));
   std::vector<double> out;
   for (int k = n; k >= 0; --k) out.push_back(widest * k / n);
   return out;
@@ -158,10 +169,12 @@ void rectangular_pocket(DialectMachine& m, const std::string& name, const std::m
   auto at = [&](double u, double v) { return Point3{cx + ca * u - sa * v, cy + sa * u + ca * v, 0}; };
   const double widest = std::min(a, b);
   const std::vector<double> insets = ring_insets(widest, cut.step());
+  const std::vector<double> layers = cut.layers();
+  cut.check_passes(layers.size(), insets.empty() ? std::size_t{1} << 40 : insets.size());
   const Point3 start = at(a - widest, 0);
   cut.approach(start.x, start.y);
   const bool ccw = cut.ccw();
-  for (double z : cut.layers()) {
+  for (double z : layers) {
     cut.plunge(z);
     for (double d : insets) {
       const double A = a - d, B = b - d, r = std::min(std::max(0.0, corner - d), std::min(A, B));
@@ -206,9 +219,11 @@ void circular_pocket(DialectMachine& m, const std::string& name, const std::map<
   if (radius <= 0) cut.fail("the tool (with the allowance _FAL) is wider than the pocket");
   const double cx = cut.get("PA"), cy = cut.get("PO");
   std::vector<double> insets = ring_insets(radius, cut.step());
+  const std::vector<double> layers = cut.layers();
+  cut.check_passes(layers.size(), insets.empty() ? std::size_t{1} << 40 : insets.size());
   insets.erase(insets.begin());  // the innermost "ring" is the centre itself
   cut.approach(cx, cy);
-  for (double z : cut.layers()) {
+  for (double z : layers) {
     cut.plunge(z);
     for (double d : insets) {
       cut.line(cx + radius - d, cy);
