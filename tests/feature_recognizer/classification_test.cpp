@@ -469,3 +469,24 @@ TEST(Recognition, ALargeNestedPocketCutWithTheSameToolIsItsOwnFeature) {
   EXPECT_DOUBLE_EQ(features[1].top_z, -5);
   EXPECT_DOUBLE_EQ(features[1].bottom_z, -13);
 }
+
+// A stock allowance wider than the tool: one contour cuts the part out and leaves the rest of the
+// margin standing (or falling off): still the part's outside profile.
+TEST(Recognition, ContourInsideAWideStockMarginIsTheOutsideProfile) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(2, ToolType::FlatEndMill, 2));
+  b.rapid(-1, -1, 2);
+  for (double z : {-5.0, -10.0}) {
+    b.feed(-1, -1, z).feed(-1, 71, z).feed(91, 71, z).feed(91, -1, z).feed(-1, -1, z);
+  }
+  b.rapid(-1, -1, 5);
+  auto stock = block();
+  stock.min = {-4.5, -4.5, -10};
+  stock.max = {94.5, 74.5, 0};
+  const auto& f = only(fr::recognize(b.steps(), stock));
+  EXPECT_EQ(f.type, fr::FeatureType::GeneralOutsideProfile);
+  EXPECT_NEAR(f.x, 45, 0.05);
+  EXPECT_NEAR(f.y, 35, 0.05);
+  EXPECT_NEAR(f.profile.length, 90, 0.05);
+  EXPECT_EQ(f.bottom, fr::BottomCondition::Through);
+}

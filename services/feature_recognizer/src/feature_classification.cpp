@@ -15,20 +15,32 @@ Region stock_rectangle(const setup::Stock& stock) {
   return Region::rectangle({stock.min[0], stock.min[1], stock.max[0], stock.max[1]});
 }
 
+// The widest stock allowance around the part an outside profile may leave uncut (mm).
+constexpr double kStockMargin = 5.0;
+
 Point2 box_center(const Box2& b) { return {(b.xmin + b.xmax) / 2, (b.ymin + b.ymax) / 2}; }
 
 // The largest area the group's cut surrounds without cutting it (the part, for an outside
-// profile), if the group also covers everything between it and the stock's edge.
+// profile), if the group also covers everything between it and the stock's edge, or leaves
+// only a margin along that edge (a stock allowance wider than the tool: one contour pass cuts
+// the part out of it).
 std::optional<Region> surrounded_part(const MillingGroup& group, const Region& stock_rect) {
   const double stock_area = stock_rect.area();
   // What the group's box leaves of the stock is certainly uncovered: a quick no for most groups.
   const auto box = group.filled.bbox();
   const auto stock_box = stock_rect.bbox();
   if (!box || !stock_box) return std::nullopt;
-  const double covered_w = std::max(0.0, std::min(box->xmax, stock_box->xmax) - std::max(box->xmin, stock_box->xmin));
-  const double covered_h = std::max(0.0, std::min(box->ymax, stock_box->ymax) - std::max(box->ymin, stock_box->ymin));
-  if (stock_area - covered_w * covered_h > 0.005 * stock_area) return std::nullopt;
-  if (stock_rect.minus(group.filled).area() > 0.005 * stock_area) return std::nullopt;
+  const Box2 inner{stock_box->xmin + kStockMargin, stock_box->ymin + kStockMargin, stock_box->xmax - kStockMargin,
+                   stock_box->ymax - kStockMargin};
+  if (box->xmin > inner.xmin || box->ymin > inner.ymin || box->xmax < inner.xmax || box->ymax < inner.ymax) {
+    return std::nullopt;
+  }
+  const Region uncovered = stock_rect.minus(group.filled);
+  if (uncovered.area() > 0.005 * stock_area &&
+      (inner.xmax <= inner.xmin || inner.ymax <= inner.ymin ||
+       uncovered.intersected(Region::rectangle(inner)).area() > 0.005 * stock_area)) {
+    return std::nullopt;
+  }
   const Region inside = group.filled.minus(group.area);
   std::optional<Region> best;
   for (auto& c : inside.components()) {
