@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "box_index.hpp"
+
 namespace ncbridge::feature_recognizer {
 
 OperationType hole_operation_type(const setup::Tool& tool, const std::optional<canonical::CycleTag>& cycle,
@@ -43,13 +45,18 @@ std::vector<HoleCandidate> recognize_holes(const std::vector<DrillPass>& passes)
     std::vector<const DrillPass*> passes;
   };
   std::vector<Cluster> clusters;
+  BoxIndex index(25.0);  // clusters by place: a pass meets the few near it, not every one
   for (const auto& pass : passes) {
     Cluster* found = nullptr;
-    for (auto& c : clusters) {
+    const Box2 near{pass.at.x - kSameHoleDistance, pass.at.y - kSameHoleDistance, pass.at.x + kSameHoleDistance,
+                    pass.at.y + kSameHoleDistance};
+    for (auto i : index.candidates(near)) {
+      auto& c = clusters[i];
       if (std::hypot(c.at.x - pass.at.x, c.at.y - pass.at.y) < kSameHoleDistance) found = &c;
     }
     if (!found) {
       clusters.push_back({pass.at, {}});
+      index.insert(clusters.size() - 1, {pass.at.x, pass.at.y, pass.at.x, pass.at.y});
       found = &clusters.back();
     }
     found->passes.push_back(&pass);
