@@ -220,20 +220,34 @@ class Cc1Writer {
   }
   InstanceId placement(const sn::Axis2Placement3d& a, std::string_view name) {
     const PlacementKey key = key_of(name_index(name), a);
-    if (auto it = placements_.find(key); it != placements_.end()) return it->second;
-    const InstanceId id = new_placement(a, name);
-    if (placements_.size() < kNamedShared) placements_.emplace(key, id);
+    if (const InstanceId id = recent_placements_.find(key)) return id;
+    InstanceId id = 0;
+    if (auto it = placements_.find(key); it != placements_.end()) {
+      id = it->second;
+    } else {
+      id = new_placement(a, name);
+      if (placements_.size() >= kNamedShared) return id;
+      placements_.emplace(key, id);
+    }
+    recent_placements_.remember(key, id);
     return id;
   }
   InstanceId plane(const sn::Plane& pl, std::string_view name) {
     const PlacementKey key = key_of(name_index(name), pl.position);
-    if (auto it = planes_.find(key); it != planes_.end()) return it->second;
+    if (const InstanceId id = recent_planes_.find(key)) return id;
+    if (auto it = planes_.find(key); it != planes_.end()) {
+      recent_planes_.remember(key, it->second);
+      return it->second;
+    }
     const InstanceId position = placement(pl.position, name);
     s_.begin("PLANE");
     s_.string(name);
     s_.ref(position);
     const InstanceId id = s_.end();
-    if (planes_.size() < kNamedShared) planes_.emplace(key, id);
+    if (planes_.size() < kNamedShared) {
+      planes_.emplace(key, id);
+      recent_planes_.remember(key, id);
+    }
     return id;
   }
   InstanceId arc_placement(const sn::Axis2Placement3d& a) {
@@ -759,6 +773,7 @@ class Cc1Writer {
   std::vector<std::string> names_;  // of named placements and planes (few: ids of setups and workpieces, roles)
   static constexpr std::size_t kNamedShared = 16384;
   std::unordered_map<PlacementKey, InstanceId, PlacementKeyHash> placements_, planes_;
+  part21::RecentInstances<10> recent_placements_{6}, recent_planes_{6};  // the maps' entries used last
   part21::RecentInstances<3> points_{12}, directions_{10}, arc_placements_{10};
   part21::RecentInstances<2> circles_{10};
   // Scratch lists, one per level of nesting (curve <- toolpath list <- operation <- feature).
