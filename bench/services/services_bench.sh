@@ -11,6 +11,7 @@
 #    single-program clients instead (what the old bench did; also for binaries without bulk submit);
 # 3. live capture: time from a controller's RUN_END to its CC1 file (controller-sim reports it).
 # Every services output is compared with the embedded one (byte-identical, same SOURCE_DATE_EPOCH).
+# `up` is given this script's Cyclone configuration (CYCLONEDDS_URI).
 set -euo pipefail
 BIN=$(cd "$1" && pwd); BATCH=${2:-200}; LARGE=${3:-100000}; REPEAT=${4:-3}; SUBMIT=${SUBMIT:-bulk}
 SHARED=${SHARED:-$(cd "$(dirname "$0")/../../.." && pwd)/shared}
@@ -19,10 +20,19 @@ W=$(mktemp -d /tmp/ncbridge-bench.XXXXXX)
 UP=""
 trap '[[ -n $UP ]] && kill $UP 2>/dev/null; wait 2>/dev/null; rm -rf "$W"' EXIT
 export NCBRIDGE_DDS_DOMAIN=$(( 20 + $$ % 200 )) SOURCE_DATE_EPOCH=1700000000
+# The loopback configuration of deploy/cyclonedds/loopback.xml; DDS_TUNING=0 leaves out its
+# large datagrams and writer buffers (Cyclone's defaults, as before they were added).
+if [[ ${DDS_TUNING:-1} == 1 ]]; then
+  SIZES='<MaxMessageSize>65000B</MaxMessageSize><FragmentSize>62000B</FragmentSize>'
+  INTERNAL='<Internal><Watermarks><WhcHigh>8MB</WhcHigh></Watermarks></Internal>'
+else
+  SIZES='' INTERNAL=''
+fi
 cat > "$W/lo.xml" <<XML
 <CycloneDDS xmlns="https://cdds.io/config"><Domain id="any">
-<General><Interfaces><NetworkInterface name="lo" multicast="true"/></Interfaces></General>
+<General><Interfaces><NetworkInterface name="lo" multicast="true"/></Interfaces>$SIZES</General>
 <Discovery><LeaseDuration>1s</LeaseDuration></Discovery><SharedMemory><Enable>false</Enable></SharedMemory>
+$INTERNAL
 </Domain></CycloneDDS>
 XML
 export CYCLONEDDS_URI="file://$W/lo.xml"

@@ -1,7 +1,9 @@
 // ncbridge-cc1-builder: the cc1_builder stage as a DDS service. A job's canonical stream
 // (context, then batches: ncbridge/service/canonical_stream.hpp) is fed to the builder batch by
 // batch as it arrives, while the interpreter is still at work; the finished CC1 model is
-// published on the workingsteps topic as a model stream (ncbridge/service/model_stream.hpp).
+// published as a model stream (ncbridge/service/model_stream.hpp): on the workingsteps topic for
+// the feature_recognizer when the job asks for CC2, else on the features topic, straight to the
+// step writer (a CC1 job skips the recognizer).
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
@@ -52,7 +54,9 @@ class Cc1Stream final : public service::JobStream {
     builder_->end();
     for (const auto& w : builder_->warnings())
       spdlog::warn("job {}: {}: {}", context_.job_id(), w.where.to_string(), w.message);
-    service::publish_model(context_, header_, builder_->take_project());
+    // A CC1 job has nothing to recognise: its model goes straight to the step writer.
+    const bool cc2 = header_.requested == wire::ModelLevel::Cc2;
+    service::publish_model(context_, cc2 ? bus::Topic::Workingsteps : bus::Topic::Features, header_, builder_->take_project());
   }
 
  private:
@@ -72,6 +76,7 @@ int main(int argc, char** argv) {
     spec.stage = std::string(bus::kStageCc1Builder);
     spec.inputs = {{bus::Topic::Canonical, false}};
     spec.output = bus::Topic::Workingsteps;
+    spec.other_outputs = {bus::Topic::Features};
     spec.open = [](const service::JobKey&, service::JobContext& context) -> std::unique_ptr<service::JobStream> {
       return std::make_unique<Cc1Stream>(context);
     };

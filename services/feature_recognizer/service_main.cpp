@@ -3,8 +3,9 @@
 // that asks for CC2 has its model decoded chunk by chunk as it arrives, then its features
 // recognised and the CC2 project built from them, with the same library calls as
 // `ncbridge convert --level cc2` (cli/src/cc2_output.cpp: the stock is the model's rawpiece).
-// A CC1 job's stream is passed on sample by sample as it comes, not decoded (the step writer
-// checks it).
+// CC1 jobs normally skip this stage (the cc1_builder publishes their model on the features
+// topic); a CC1 model that comes here anyway is passed on sample by sample as it comes, not
+// decoded (the step writer checks it).
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
@@ -50,7 +51,7 @@ class RecognizerStream final : public service::JobStream {
     spdlog::info("job {}: {} features recognised", context_.job_id(), features.size());
     service::ModelHeader header = *model_.header();
     header.level = wire::ModelLevel::Cc2;
-    service::publish_model(context_, header, cc2.project);
+    service::publish_model(context_, bus::Topic::Features, header, cc2.project);
   }
 
  private:

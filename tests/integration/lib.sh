@@ -29,9 +29,11 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 export NCBRIDGE_DDS_DOMAIN=$(( 20 + $$ % 200 ))
 cat > "$WORK/cyclonedds.xml" <<XML
 <CycloneDDS xmlns="https://cdds.io/config"><Domain id="any">
-<General><Interfaces><NetworkInterface name="lo" multicast="true"/></Interfaces></General>
+<General><Interfaces><NetworkInterface name="lo" multicast="true"/></Interfaces>
+<MaxMessageSize>65000B</MaxMessageSize><FragmentSize>62000B</FragmentSize></General>
 <Discovery><LeaseDuration>1s</LeaseDuration></Discovery>
 <SharedMemory><Enable>false</Enable></SharedMemory>
+<Internal><Watermarks><WhcHigh>8MB</WhcHigh></Watermarks></Internal>
 </Domain></CycloneDDS>
 XML
 export CYCLONEDDS_URI="file://$WORK/cyclonedds.xml"

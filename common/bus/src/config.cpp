@@ -23,10 +23,13 @@ BusConfig config_from_environment() {
 
 std::string loopback_config_xml(std::chrono::milliseconds lease) {
   return "<CycloneDDS xmlns=\"https://cdds.io/config\"><Domain id=\"any\">"
-         "<General><Interfaces><NetworkInterface name=\"lo\" multicast=\"true\"/></Interfaces></General>"
+         "<General><Interfaces><NetworkInterface name=\"lo\" multicast=\"true\"/></Interfaces>"
+         "<MaxMessageSize>65000B</MaxMessageSize><FragmentSize>62000B</FragmentSize></General>"
          "<Discovery><LeaseDuration>" + std::to_string(lease.count()) + "ms</LeaseDuration></Discovery>"
          "<SharedMemory><Enable>false</Enable></SharedMemory>"
-         "</Domain></CycloneDDS>";
+         "<Internal><Watermarks><WhcHigh>8MB</WhcHigh></Watermarks>"
+         "<SocketReceiveBufferSize min=\"default\" max=\"8MB\"/><SocketSendBufferSize min=\"default\" max=\"8MB\"/>"
+         "</Internal></Domain></CycloneDDS>";
 }
 
 }  // namespace ncbridge::bus

@@ -19,7 +19,7 @@ wire::StepncModel decode_part(const std::string& job_id, const bus::Envelope& sa
 
 }  // namespace
 
-void publish_model(JobContext& context, const ModelHeader& header, const stepnc::Project& project) {
+void publish_model(JobContext& context, bus::Topic topic, const ModelHeader& header, const stepnc::Project& project) {
   const stepnc_codec::ProjectParts parts = stepnc_codec::split_project(project, kModelChunkBytes);
   wire::StepncModel m;
   m.job_id = context.job_id();
@@ -29,12 +29,12 @@ void publish_model(JobContext& context, const ModelHeader& header, const stepnc:
   m.seq = 0;
   m.last = false;
   m.model = parts.shell;
-  context.publish("", 0, kModelShell, false, wire::encode_stepnc_model(m));
+  context.publish_on(topic, "", 0, kModelShell, false, wire::encode_stepnc_model(m));
   for (std::size_t i = 0; i < parts.chunks.size(); ++i) {
     m.seq = i + 1;
     m.last = i + 1 == parts.chunks.size();
     m.model = parts.chunks[i];
-    context.publish("", m.seq, kModelChunk, m.last, wire::encode_stepnc_model(m));
+    context.publish_on(topic, "", m.seq, kModelChunk, m.last, wire::encode_stepnc_model(m));
   }
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <deque>
 #include <map>
+#include <stdexcept>
 #include <utility>
 
 #include "ncbridge/bus/reader.hpp"
@@ -49,6 +50,15 @@ class CollectingStream final : public JobStream {
 
 }  // namespace
 
+void JobContext::publish_on(bus::Topic topic, std::string_view subkey, std::uint64_t seq, std::uint32_t kind, bool last,
+                            std::string_view payload) {
+  const auto it = std::find_if(outputs_.begin(), outputs_.end(), [topic](const bus::Writer* w) { return w->topic() == topic; });
+  if (it == outputs_.end()) throw std::logic_error("the stage does not publish on " + std::string(bus::topic_name(topic)));
+  (*it)->write(job_id_, subkey, seq, kind, last, payload);
+  published_.emplace(topic, subkey);
+  bytes_ += payload.size();
+}
+
 struct StageRunner::State {
   State(bus::Participant& participant, StageSpec s, RunnerOptions o)
       : spec(std::move(s)),
@@ -60,6 +70,7 @@ struct StageRunner::State {
         output(participant, spec.output),
         wait_set(participant) {
     for (const InputTopic& in : spec.inputs) inputs.emplace_back(in, bus::Reader(participant, in.topic));
+    for (const bus::Topic t : spec.other_outputs) other_outputs.push_back(std::make_unique<bus::Writer>(participant, t));
     for (const auto& [in, reader] : inputs) wait_set.attach(reader);
     wait_set.attach(status_reader);
     wait_set.attach(directory.reader());
@@ -73,9 +84,10 @@ struct StageRunner::State {
     Clock::time_point last_progress;
   };
   // A job over whose statuses (and final results) stay on the bus for a while.
+  using Instances = std::set<std::pair<bus::Topic, std::string>>;  // (topic, subkey) of a job
   struct Kept {
     std::string job_id;
-    std::set<std::string> output_subkeys;  // final results; empty for an intermediate stage
+    Instances outputs;  // final results; empty for an intermediate stage
     std::uint64_t bytes = 0;
     Clock::time_point over;
   };
@@ -141,17 +153,24 @@ struct StageRunner::State {
     Kept kept{job_id, {}, 0, Clock::now()};
     if (const auto p = published.find(job_id); p != published.end()) {
       if (spec.unregister_output_when_over) {
-        for (const std::string& subkey : p->second.first) unregister(output, job_id, subkey);
+        for (const auto& [topic, subkey] : p->second.first) unregister(writer_of(topic), job_id, subkey);
       } else {
-        kept.output_subkeys = std::move(p->second.first);
+        kept.outputs = std::move(p->second.first);
         kept.bytes = p->second.second;
       }
       published.erase(p);
     }
-    if (with_status.erase(job_id) != 0 || !kept.output_subkeys.empty()) {
+    if (with_status.erase(job_id) != 0 || !kept.outputs.empty()) {
       kept_bytes += kept.bytes;
       kept_jobs.push_back(std::move(kept));
     }
+  }
+
+  bus::Writer& writer_of(bus::Topic topic) {
+    for (auto& w : other_outputs) {
+      if (w->topic() == topic) return *w;
+    }
+    return output;
   }
 
   static void unregister(bus::Writer& writer, const std::string& key, const std::string& subkey) {
@@ -169,7 +188,7 @@ struct StageRunner::State {
     while (!kept_jobs.empty() &&
            (kept_jobs.size() > r.max_jobs || now - kept_jobs.front().over > r.max_age || kept_bytes > r.max_result_bytes)) {
       Kept& k = kept_jobs.front();
-      for (const std::string& subkey : k.output_subkeys) unregister(output, k.job_id, subkey);
+      for (const auto& [topic, subkey] : k.outputs) unregister(writer_of(topic), k.job_id, subkey);
       unregister(status_writer, k.job_id, spec.stage);
       kept_bytes -= k.bytes;
       kept_jobs.pop_front();
@@ -218,7 +237,9 @@ struct StageRunner::State {
       p.progress = fraction;
       publish_status(std::move(p));
     };
-    a.context = std::make_unique<JobContext>(output, job_id, progress);
+    std::vector<bus::Writer*> writers{&output};
+    for (auto& w : other_outputs) writers.push_back(w.get());
+    a.context = std::make_unique<JobContext>(std::move(writers), job_id, progress);
     slot = &active.emplace(job_id, std::move(a)).first->second;
     wire::JobStatus running;
     running.job_id = job_id;
@@ -290,9 +311,9 @@ struct StageRunner::State {
   void remember_published(const std::string& job_id) {
     const auto it = active.find(job_id);
     if (it == active.end()) return;
-    auto& [subkeys, bytes] = published[job_id];
+    auto& [instances, bytes] = published[job_id];
     const JobContext& c = *it->second.context;
-    subkeys.insert(c.published_subkeys().begin(), c.published_subkeys().end());
+    instances.insert(c.published().begin(), c.published().end());
     bytes += c.published_bytes();
     active.erase(it);
   }
@@ -304,13 +325,14 @@ struct StageRunner::State {
   bus::Reader status_reader;
   bus::Writer status_writer;
   bus::Writer output;
+  std::vector<std::unique_ptr<bus::Writer>> other_outputs;
   std::vector<std::pair<InputTopic, bus::Reader>> inputs;
   bus::WaitSet wait_set;  // declared after the readers: detached before they go
   JobAssembler assembler;
   std::map<std::string, Active, std::less<>> active;
   std::set<std::string, std::less<>> started;       // jobs this worker started (never twice)
   // Jobs this worker published output for, with the subkeys and bytes, until they are over.
-  std::map<std::string, std::pair<std::set<std::string>, std::uint64_t>, std::less<>> published;
+  std::map<std::string, std::pair<Instances, std::uint64_t>, std::less<>> published;
   std::set<std::string, std::less<>> with_status;   // jobs this worker published a status of
   std::deque<Kept> kept_jobs;
   std::uint64_t kept_bytes = 0;

@@ -222,7 +222,9 @@ class Encoder {
   }
 
   void fixed(std::uint64_t v) {
-    for (int i = 0; i < 8; ++i) out_.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+    char bytes[8];
+    for (int i = 0; i < 8; ++i) bytes[i] = static_cast<char>((v >> (8 * i)) & 0xFF);
+    out_.append(bytes, 8);
   }
 
   std::string& out_;

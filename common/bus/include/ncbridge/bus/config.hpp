@@ -19,8 +19,9 @@ struct BusConfig {
 BusConfig config_from_environment();
 
 // A Cyclone configuration for runs on one machine: loopback only, multicast on (discovery
-// without a peer list, any number of participants), shared memory off, and the participant
-// lease set to `lease` so a crashed process is noticed that fast.
+// without a peer list, any number of participants), shared memory off, the participant lease
+// set to `lease` so a crashed process is noticed that fast, and large datagrams and writer
+// buffers (models and Part 21 files are megabytes: deploy/cyclonedds/loopback.xml says why).
 std::string loopback_config_xml(std::chrono::milliseconds lease = std::chrono::milliseconds(1000));
 
 }  // namespace ncbridge::bus

@@ -33,8 +33,9 @@ struct ModelHeader {
   std::string output_name;
 };
 
-// Publishes `project` as the job's model stream (shell, then chunks; the last marked).
-void publish_model(JobContext& context, const ModelHeader& header, const stepnc::Project& project);
+// Publishes `project` as the job's model stream (shell, then chunks; the last marked) on `topic`
+// (workingsteps or features).
+void publish_model(JobContext& context, bus::Topic topic, const ModelHeader& header, const stepnc::Project& project);
 
 // Reads a job's model stream, sample by sample (in seq order), decoding each chunk as it comes.
 // Throws InputError for a sample that is not the expected part of this job's model.

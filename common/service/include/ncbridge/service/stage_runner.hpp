@@ -25,6 +25,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "ncbridge/bus/participant.hpp"
@@ -55,26 +56,29 @@ struct JobInput {
 class JobContext {
  public:
   using Progress = std::function<void(double)>;
-  JobContext(bus::Writer& output, std::string job_id, Progress progress)
-      : output_(output), job_id_(std::move(job_id)), progress_(std::move(progress)) {}
+  // `outputs`: the stage's output topic first, then any others it may publish on.
+  JobContext(std::vector<bus::Writer*> outputs, std::string job_id, Progress progress)
+      : outputs_(std::move(outputs)), job_id_(std::move(job_id)), progress_(std::move(progress)) {}
 
   // Publishes one sample of this job on the stage's output topic (key = the job id).
   void publish(std::string_view subkey, std::uint64_t seq, std::uint32_t kind, bool last, std::string_view payload) {
-    output_.write(job_id_, subkey, seq, kind, last, payload);
-    subkeys_.emplace(subkey);
-    bytes_ += payload.size();
+    publish_on(outputs_.front()->topic(), subkey, seq, kind, last, payload);
   }
+  // The same on another of the stage's outputs (StageSpec::other_outputs).
+  void publish_on(bus::Topic topic, std::string_view subkey, std::uint64_t seq, std::uint32_t kind, bool last,
+                  std::string_view payload);
   void progress(double fraction) { progress_(fraction); }  // 0..1; rate-limited by the runner
   const std::string& job_id() const { return job_id_; }
 
-  const std::set<std::string>& published_subkeys() const { return subkeys_; }
+  // The instances (topic, subkey) this job published, and how many payload bytes.
+  const std::set<std::pair<bus::Topic, std::string>>& published() const { return published_; }
   std::uint64_t published_bytes() const { return bytes_; }
 
  private:
-  bus::Writer& output_;
+  std::vector<bus::Writer*> outputs_;
   std::string job_id_;
   Progress progress_;
-  std::set<std::string> subkeys_;
+  std::set<std::pair<bus::Topic, std::string>> published_;
   std::uint64_t bytes_ = 0;
 };
 
@@ -91,6 +95,7 @@ struct StageSpec {
   std::string stage;                  // bus::kStage*
   std::vector<InputTopic> inputs;
   bus::Topic output;                  // where the stage publishes
+  std::vector<bus::Topic> other_outputs;  // where else it may (JobContext::publish_on)
   bool unregister_output_when_over = true;  // false for final results (part21): kept by retention
   // One of the two. run: gets a complete job. open: starts a job from its first sample (the
   // context outlives the stream). Both throw InputError for bad input (program, payload);
