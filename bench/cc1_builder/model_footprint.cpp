@@ -1,7 +1,9 @@
-// model_footprint PROGRAM TOOLS STOCK: how much memory the CC1 conversion of a program takes, by
-// stage. Runs interpreter -> cc1_builder, measures the finished model (bytes its containers use)
-// and the peak resident set, then writes the Part 21 text to a sink that only counts it.
-// Comparing two program lengths shows what grows with the program and what stays flat (figures in
+// model_footprint PROGRAM TOOLS STOCK [--streamed]: how much memory the CC1 conversion of a
+// program takes, by stage. Whole: runs interpreter -> cc1_builder, measures the finished model
+// (bytes its containers use) and the peak resident set, then writes the Part 21 text to a sink
+// that only counts it. Streamed (as `ncbridge convert --level cc1`): the builder hands each
+// element to the Part 21 writer at once; only the peak resident set is measured. Comparing two
+// program lengths shows what grows with the program and what stays flat (figures in
 // docs/performance.md, "CC1 conversion").
 #include <cstdio>
 #include <fstream>
@@ -13,6 +15,7 @@
 #include "ncbridge/setup/stock.hpp"
 #include "ncbridge/setup/tool_list.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
+#include "ncbridge/step_writer/stepnc_stream_writer.hpp"
 
 namespace {
 
@@ -88,11 +91,42 @@ class CountingSink final : public canonical::Sink {
   canonical::Sink& next_;
 };
 
+// Hands each finished element to the Part 21 writer and counts them.
+class ElementCounter final : public cc1_builder::WorkplanSink {
+ public:
+  explicit ElementCounter(step_writer::StepncStreamWriter& writer) : writer_(writer) {}
+  void element(const stepnc::Project& project, const stepnc::Executable& element) override {
+    writer_.element(project, element);
+    ++elements;
+  }
+  std::size_t elements = 0;
+
+ private:
+  step_writer::StepncStreamWriter& writer_;
+};
+
+int streamed(const cc1_builder::Options& options, const interpreter::Options& interp, const char* program) {
+  std::uint64_t bytes = 0;
+  step_writer::StepncStreamWriter writer({}, [&](std::string_view chunk) { bytes += chunk.size(); });
+  ElementCounter elements(writer);
+  cc1_builder::Cc1Builder builder(options, &elements);
+  CountingSink sink(builder);
+  interpreter::interpret_file(program, interp, sink);
+  writer.finish(builder.take_project());
+  const Resident done = resident();
+  std::printf("streamed: calls %llu, moves %llu, workplan elements %zu, file %.1f MB\n",
+              static_cast<unsigned long long>(sink.calls), static_cast<unsigned long long>(sink.moves), elements.elements,
+              static_cast<double>(bytes) / 1e6);
+  std::printf("peak RSS %.1f MB (interpreter, builder, writer and the program's code; no model is held)\n",
+              static_cast<double>(done.peak_kb) / 1e3);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: model_footprint PROGRAM TOOLS STOCK\n");
+  if (argc != 4 && !(argc == 5 && std::string(argv[4]) == "--streamed")) {
+    std::fprintf(stderr, "usage: model_footprint PROGRAM TOOLS STOCK [--streamed]\n");
     return 2;
   }
   try {
@@ -101,6 +135,7 @@ int main(int argc, char** argv) {
     options.stock = setup::read_stock(argv[3]);
     interpreter::Options interp;
     interp.tools = options.tools;
+    if (argc == 5) return streamed(options, interp, argv[1]);
     cc1_builder::Cc1Builder builder(options);
     CountingSink sink(builder);
     interpreter::interpret_file(argv[1], interp, sink);
