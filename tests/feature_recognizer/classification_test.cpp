@@ -490,3 +490,17 @@ TEST(Recognition, ContourInsideAWideStockMarginIsTheOutsideProfile) {
   EXPECT_NEAR(f.profile.length, 90, 0.05);
   EXPECT_EQ(f.bottom, fr::BottomCondition::Through);
 }
+
+// A pocket not extended beyond the open side: the tool's edge runs along the part's edge (y = 0),
+// it does not cross it. Open there all the same.
+TEST(Recognition, AreaReachingThePartEdgeWithoutCrossingItIsOpen) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 10));
+  for (double z : {-3.0, -6.0}) {
+    b.rapid(35, 5, 2).feed(35, 5, z).feed(65, 5, z).feed(65, 15, z).feed(35, 15, z).feed(35, 5, z).rapid(35, 5, 5);
+  }
+  const auto& f = only(fr::recognize(b.steps(), block()));
+  EXPECT_EQ(f.type, fr::FeatureType::OpenPocket);
+  ASSERT_EQ(f.open_sides.size(), 1u);
+  EXPECT_EQ(f.open_sides[0], fr::OpenSide::YMinus);
+}

@@ -258,7 +258,10 @@ PartEnvelope find_part_envelope(const std::vector<MillingGroup>& groups, const s
   }
   if (profile_floor) part.bottom_z = std::max(part.bottom_z, *profile_floor);
   part.box = part.outline.bbox().value_or(Box2{stock.min[0], stock.min[1], stock.max[0], stock.max[1]});
-  part.outside_band = boundary_band(part.outline, kOpenBandWidth, tolerance).minus(part.outline);
+  // From just inside the outline: a cut whose edge runs along the part's edge (a pocket not
+  // extended beyond an open side) is open there too.
+  const Region edge = boundary_band(part.outline, kOpenEdgeInset, tolerance);
+  part.outside_band = boundary_band(part.outline, kOpenBandWidth, tolerance).minus(part.outline).united(edge.intersected(part.outline));
   return part;
 }
 

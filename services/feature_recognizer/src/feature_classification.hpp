@@ -24,6 +24,9 @@ struct PartEnvelope {
 
 // Half-width of the band that tells open boundaries (mm).
 inline constexpr double kOpenBandWidth = 0.5;
+// How far inside the outline the band begins (mm): more than the chord tolerance of the swept
+// areas, less than any wall a part keeps.
+inline constexpr double kOpenEdgeInset = 0.05;
 
 PartEnvelope find_part_envelope(const std::vector<MillingGroup>& groups, const setup::Stock& stock,
                                 double tolerance);
