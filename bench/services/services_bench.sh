@@ -46,7 +46,7 @@ gen() {  # K LINES
 up() {  # WORKERS
   "$BIN/ncbridge" up --workers "$1" --log-level warn --live-tools "$T" --live-stock "$S" > "$W/up.log" 2>&1 & UP=$!
   for _ in $(seq 1 50); do
-    [[ $("$BIN/ncbridge" status --listen 0.3 2>/dev/null | grep -Ec "^  [a-z_]+ +$1 live") == 4 ]] && return 0
+    [[ $("$BIN/ncbridge" status --listen 0.3 2>/dev/null | grep -Ec "^  [a-z0-9_]+ +$1 live") == 4 ]] && return 0
   done
   echo "services did not come up" >&2; exit 1
 }
