@@ -1,10 +1,13 @@
-// libFuzzer target: arbitrary bytes as a Heidenhain program (the heidenhain front-end and the lowering onto
-// the RS274 executor). The interpreter must either finish or throw ncbridge::InputError with a
+// libFuzzer target: arbitrary bytes as a part program in one dialect (NCBRIDGE_FUZZ_DIALECT, set
+// per target in CMakeLists.txt): the dialect's reader, its control flow, the lowering and the
+// RS274 executor. The interpreter must either finish or throw ncbridge::InputError with a
 // location; anything else (a crash, a sanitizer report, another exception, a hang past
-// libFuzzer's -timeout) is a bug. Seeds: tests/fuzz/corpus/heidenhain/.
+// libFuzzer's -timeout) is a bug. Seeds: tests/fuzz/corpus/<dialect>/.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "ncbridge/canonical/call.hpp"
 #include "ncbridge/common/error.hpp"
@@ -18,11 +21,13 @@ class DiscardingSink final : public ncbridge::canonical::Sink {
   void call(const ncbridge::canonical::Call&) override {}
 };
 
+// A few tools with names and sizes, so that tool changes, length offsets, cutter compensation,
+// tools called by name and cycles that need a tool diameter are reachable.
 ncbridge::interpreter::Options fuzz_options() {
   using ncbridge::setup::Tool;
   ncbridge::interpreter::Options options;
-  options.dialect = ncbridge::interpreter::Dialect::Heidenhain;
-  options.max_loop_iterations = 20'000;  // endless loops end quickly under the sanitizers
+  options.dialect = ncbridge::interpreter::Dialect::NCBRIDGE_FUZZ_DIALECT;
+  options.max_loop_iterations = 20'000;  // endless loops end in an error well within -timeout
   std::vector<Tool> tools;
   for (int number = 1; number <= 4; ++number) {
     Tool tool;
@@ -34,7 +39,7 @@ ncbridge::interpreter::Options fuzz_options() {
     tools.push_back(tool);
   }
   options.tools = ncbridge::setup::ToolList(std::move(tools));
-  return options;  // no subroutine path: only subprograms inside the fuzzed text are found
+  return options;  // no subroutine path: fuzzed programs read no other files
 }
 
 }  // namespace
@@ -44,7 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view program(reinterpret_cast<const char*>(data), size);
   DiscardingSink sink;
   try {
-    ncbridge::interpreter::interpret_text(program, "fuzz.h", options, sink);
+    ncbridge::interpreter::interpret_text(program, NCBRIDGE_FUZZ_FILE_NAME, options, sink);
   } catch (const ncbridge::InputError&) {
     // Bad input reported as it should be.
   }
