@@ -4,10 +4,12 @@
 // at most half a grid diagonal, so areas agree within perimeter * kGrid per operation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
+#include "box_index.hpp"
 #include "exact_union.hpp"
 #include "region.hpp"
 #include "swept_area.hpp"
@@ -193,4 +195,41 @@ TEST(RegionCrossCheck, NonFiniteCoordinatesStayOnTheGrid) {
   const double inf = std::numeric_limits<double>::infinity();
   const auto r = fr::Region::polygon({{0, 0}, {inf, 0}, {0, std::nan("")}});
   EXPECT_TRUE(std::isfinite(r.area()));
+}
+
+TEST(BoxIndex, CandidatesHoldEveryOverlappingBoxInOrder) {
+  // Boxes of many sizes (some wider than the index files cell by cell), some re-filed larger.
+  fr::BoxIndex index(25.0);
+  std::vector<fr::Box2> boxes;
+  unsigned seed = 12345;
+  auto next = [&seed] {
+    seed = seed * 1103515245u + 12345u;
+    return static_cast<double>((seed >> 8) % 100000) / 100.0;  // 0 .. 1000
+  };
+  for (std::size_t i = 0; i < 400; ++i) {
+    const double x = next(), y = next(), w = i % 50 == 0 ? 800 : next() / 20, h = next() / 20;
+    boxes.push_back({x, y, x + w, y + h});
+    index.insert(i, boxes.back());
+    if (i % 7 == 0) {
+      boxes.back().xmax += 40;  // a feature that grew
+      index.insert(i, boxes.back());
+    }
+  }
+  for (std::size_t q = 0; q < 200; ++q) {
+    const double x = next(), y = next();
+    const fr::Box2 query{x, y, x + next() / 10, y + next() / 10};
+    const auto found = index.candidates(query);
+    EXPECT_TRUE(std::is_sorted(found.begin(), found.end()));
+    EXPECT_EQ(std::adjacent_find(found.begin(), found.end()), found.end());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const auto& b = boxes[i];
+      const bool touches = b.xmin <= query.xmax && query.xmin <= b.xmax && b.ymin <= query.ymax && query.ymin <= b.ymax;
+      if (touches) EXPECT_TRUE(std::binary_search(found.begin(), found.end(), i)) << "box " << i << " query " << q;
+    }
+  }
+  // A point on a cell line finds the boxes on both sides of it.
+  fr::BoxIndex lines(10.0);
+  lines.insert(0, {0, 0, 10, 10});
+  lines.insert(1, {10, 0, 20, 10});
+  EXPECT_EQ(lines.candidates({10, 5, 10, 5}).size(), 2u);
 }

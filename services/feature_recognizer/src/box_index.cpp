@@ -20,7 +20,8 @@ bool BoxIndex::cell_range(const Box2& box, Cell& lo, Cell& hi) const {
   }
   lo = {static_cast<long long>(std::floor(bounds[0])), static_cast<long long>(std::floor(bounds[1]))};
   hi = {static_cast<long long>(std::floor(bounds[2])), static_cast<long long>(std::floor(bounds[3]))};
-  return (hi.first - lo.first + 1) * (hi.second - lo.second + 1) <= kMaxCellsPerBox;
+  const long long columns = hi.first - lo.first + 1, rows = hi.second - lo.second + 1;
+  return columns <= kMaxCellsPerBox && rows <= kMaxCellsPerBox && columns * rows <= kMaxCellsPerBox;
 }
 
 void BoxIndex::insert(std::size_t id, const Box2& box) {
