@@ -19,6 +19,8 @@
 #include <sstream>
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
 #include "motion_path.hpp"
 #include "support/run_program.hpp"
 
@@ -289,6 +291,39 @@ TEST(Sinumerik, AutoDetectsCamTest) {
   const auto run = canon(program, "auto", {});
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.err.find("dialect siemens840d (detected:"), std::string::npos) << run.err;
+}
+
+// SINUMERIK POCKET3/POCKET4 through the whole pipeline: the recogniser, which knows nothing of
+// the cycles, finds the pockets as programmed in the moves the decomposition made.
+TEST(Sinumerik, PocketCyclesAreRecognisedAsTheirPockets) {
+  const fs::path dir = kHere / "recognised";
+  const fs::path work = fs::temp_directory_path() / ("ncbridge_pockets_" + std::to_string(::getpid()));
+  fs::create_directories(work);
+  const auto run = run_program({NCBRIDGE_EXECUTABLE, "convert", (dir / "sinumerik_pockets.mpf").string(), "--dialect",
+                                "siemens840d", "--tools", (kHere / "parts/tools.json").string(), "--stock",
+                                (dir / "stock.json").string(), "--level", "cc2", "-o", (work / "p.stp").string(),
+                                "--report", (work / "p.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto report = nlohmann::json::parse(read_file(work / "p.json"));
+  fs::remove_all(work);
+  const auto& features = report.at("features");
+  ASSERT_EQ(features.size(), 2u) << features.dump(1);
+  const auto& round = features[0];
+  EXPECT_EQ(round.at("type"), "closed_pocket");
+  EXPECT_NEAR(round.at("center_xy")[0].get<double>(), 25.0, kTolerance);
+  EXPECT_NEAR(round.at("center_xy")[1].get<double>(), 40.0, kTolerance);
+  EXPECT_NEAR(round.at("depth").get<double>(), 6.0, kTolerance);
+  EXPECT_NEAR(round.at("dimensions").at("diameter").get<double>(), 30.0, 0.05);  // the rings' chords
+  EXPECT_EQ(round.at("operations")[0].at("strategy"), "contour_parallel");
+  EXPECT_EQ(round.at("operations")[0].at("layers"), 2);
+  const auto& box = features[1];
+  EXPECT_EQ(box.at("type"), "closed_pocket");
+  EXPECT_NEAR(box.at("center_xy")[0].get<double>(), 70.0, kTolerance);
+  EXPECT_NEAR(box.at("center_xy")[1].get<double>(), 40.0, kTolerance);
+  EXPECT_NEAR(box.at("depth").get<double>(), 4.0, kTolerance);
+  EXPECT_NEAR(box.at("dimensions").at("length").get<double>(), 30.0, kTolerance);
+  EXPECT_NEAR(box.at("dimensions").at("width").get<double>(), 20.0, kTolerance);
+  EXPECT_NEAR(box.at("dimensions").at("corner_radius").get<double>(), 6.0, 0.05);
 }
 
 // ---- Heidenhain feed units: what the user says, never guessed
