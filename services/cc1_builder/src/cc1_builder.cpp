@@ -9,9 +9,11 @@
 #include "ncbridge/cc1_builder/cc1_builder.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <unordered_map>
 #include <utility>
 
 #include "hole_cycle.hpp"
@@ -46,16 +48,53 @@ std::string numbered(std::string_view prefix, int n, std::string_view suffix = {
   return s;
 }
 
-// Index of `value` in `table`, appending it when new. Recent entries are checked first: programs
-// switch between few technologies.
+// The index of each distinct value of a table (technologies, machine functions), appending new
+// ones: a hash lookup, as a program may set a new feed on every line.
 template <class T, class RefT>
-RefT intern(std::vector<T>& table, const T& value) {
-  for (std::size_t i = table.size(); i-- > 0;) {
-    if (table[i] == value) return RefT{static_cast<std::uint32_t>(i)};
+class Interned {
+ public:
+  RefT operator()(std::vector<T>& table, const T& value) {
+    const std::uint64_t h = hash(value);
+    auto [first, last] = index_.equal_range(h);
+    for (auto it = first; it != last; ++it) {
+      if (table[it->second] == value) return RefT{it->second};
+    }
+    table.push_back(value);
+    const auto i = static_cast<std::uint32_t>(table.size() - 1);
+    index_.emplace(h, i);
+    return RefT{i};
   }
-  table.push_back(value);
-  return RefT{static_cast<std::uint32_t>(table.size() - 1)};
-}
+
+ private:
+  static void mix(std::uint64_t& h, std::uint64_t w) {
+    h ^= w;
+    h *= 0xFF51AFD7ED558CCDull;
+    h ^= h >> 32;
+  }
+  static void mix(std::uint64_t& h, const std::optional<double>& v) {
+    mix(h, v ? std::bit_cast<std::uint64_t>(*v) : 0x7FF8DEADull);
+  }
+  static std::uint64_t hash(const stepnc::MillingTechnology& t) {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    mix(h, t.feedrate);
+    mix(h, t.cutspeed);
+    mix(h, t.spindle);
+    mix(h, t.feedrate_per_tooth);
+    mix(h, static_cast<std::uint64_t>(t.feedrate_reference) | std::uint64_t{t.synchronize_spindle_with_feed} << 8 |
+               std::uint64_t{t.inhibit_feedrate_override} << 9 | std::uint64_t{t.inhibit_spindle_override} << 10);
+    return h;
+  }
+  static std::uint64_t hash(const stepnc::MillingMachineFunctions& f) {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    mix(h, f.coolant_pressure);
+    mix(h, f.through_pressure);
+    mix(h, std::uint64_t{f.coolant} | std::uint64_t{f.through_spindle_coolant} << 1 | std::uint64_t{f.chip_removal} << 2 |
+               (f.mist ? 8u + std::uint64_t{*f.mist} : 0u) << 3);
+    return h;
+  }
+
+  std::unordered_multimap<std::uint64_t, std::uint32_t> index_;
+};
 
 }  // namespace
 
@@ -108,6 +147,8 @@ struct Cc1Builder::State {
   bool taken = false;
 
   std::map<int, stepnc::ToolRef> tool_refs;
+  Interned<stepnc::MillingTechnology, stepnc::TechnologyRef> technologies;
+  Interned<stepnc::MillingMachineFunctions, stepnc::MachineFunctionsRef> machine_functions;
   std::optional<OpenCut> cut;
   std::optional<PendingRapid> rapid;
   std::optional<HoleCycle> hole;
@@ -297,8 +338,8 @@ struct Cc1Builder::State {
       cut->tool = loaded_tool(c.source, nullptr);
       cut->technology_value = technology;
       cut->functions_value = functions;
-      cut->technology = intern<stepnc::MillingTechnology, stepnc::TechnologyRef>(project.technologies, technology);
-      cut->functions = intern<stepnc::MillingMachineFunctions, stepnc::MachineFunctionsRef>(project.machine_functions, functions);
+      cut->technology = technologies(project.technologies, technology);
+      cut->functions = machine_functions(project.machine_functions, functions);
       cut->trajectories.push_back(cutting_trajectory());
     }
     extend(cut->source, c.source);
@@ -362,9 +403,9 @@ struct Cc1Builder::State {
       hole->q = tag.q * m.to_mm;
       hole->p = tag.p;
       hole->tool = loaded_tool(c.source, &hole_tool);
-      hole->technology = intern<stepnc::MillingTechnology, stepnc::TechnologyRef>(project.technologies, m.technology());
+      hole->technology = technologies(project.technologies, m.technology());
       hole->machine_functions =
-          intern<stepnc::MillingMachineFunctions, stepnc::MachineFunctionsRef>(project.machine_functions, m.machine_functions());
+          machine_functions(project.machine_functions, m.machine_functions());
     }
     extend(hole->source, c.source);
     auto follow = [&](const stepnc::CartesianPoint& p, bool feed) {
