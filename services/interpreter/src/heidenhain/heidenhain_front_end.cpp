@@ -75,7 +75,7 @@ class Runner {
   void bore_milling(std::map<std::string, double>& v, double r, double bottom, double clearance, std::uint32_t column);
   void split_m(const HBlock& b, NeutralBlock& before, NeutralBlock& after);
   void add_feed(NeutralBlock& nb, std::uint32_t column);
-  void plan_corner(const HBlock& rnd, std::size_t index, const Point3& start, const Point3& corner, const Point3& next);
+  void plan_chamfer(const HBlock& chf, std::size_t index, const Point3& start, const Point3& corner, const Point3& next);
   ContourElement next_element(const HBlock& b, std::size_t index, const Point3& start, std::size_t corner_index,
                               std::uint32_t corner_column, std::optional<Point3> pole);
   // An error about the block at line index `index` of the running program (a block read ahead).
@@ -424,42 +424,28 @@ bool Runner::tool_call(const HBlock& b) {
   return !m_.execute(nb);
 }
 
-void Runner::plan_corner(const HBlock& rnd, std::size_t index, const Point3& start, const Point3& corner,
-                         const Point3& next) {
+// CHF between two straight lines: the corner cut at `size` from it along both lines.
+void Runner::plan_chamfer(const HBlock& chf, std::size_t index, const Point3& start, const Point3& corner,
+                          const Point3& next) {
   double ux = corner.x - start.x, uy = corner.y - start.y;
   double vx = next.x - corner.x, vy = next.y - corner.y;
-  double lu = std::hypot(ux, uy), lv = std::hypot(vx, vy);
-  if (lu < 1e-9 || lv < 1e-9) fail_at(index, rnd.column, rnd.keyword + " between elements of zero length");
+  const double lu = std::hypot(ux, uy), lv = std::hypot(vx, vy);
+  if (lu < 1e-9 || lv < 1e-9) fail_at(index, chf.column, "CHF between elements of zero length");
   ux /= lu; uy /= lu; vx /= lv; vy /= lv;
-  double cross = ux * vy - uy * vx, dot = ux * vx + uy * vy;
-  if (std::fabs(cross) < 1e-9) fail_at(index, rnd.column, rnd.keyword + " at a corner without a change of direction");
-  const HWord* r = find(rnd, rnd.keyword == "RND" ? "R" : "");
+  if (std::fabs(ux * vy - uy * vx) < 1e-9) fail_at(index, chf.column, "CHF at a corner without a change of direction");
+  // CHF 5: the length is the block's first value
   double size = 0;
-  if (rnd.keyword == "RND") {
-    if (!r || r->value == kNoExpr) fail_at(index, rnd.column, "RND needs R");
-    size = eval(rnd, r->value);
-  } else {
-    // CHF 5: the length is the block's first value
-    for (const HWord& w : rnd.words) {
-      if (w.value != kNoExpr && w.name.empty()) size = eval(rnd, w.value);
-    }
-    if (size == 0 && !rnd.words.empty() && rnd.words.front().value != kNoExpr) size = eval(rnd, rnd.words.front().value);
+  for (const HWord& w : chf.words) {
+    if (w.value != kNoExpr && w.name.empty()) size = eval(chf, w.value);
   }
-  if (size <= 0) fail_at(index, rnd.column, rnd.keyword + " size must be positive");
+  if (size == 0 && !chf.words.empty() && chf.words.front().value != kNoExpr) size = eval(chf, chf.words.front().value);
+  if (size <= 0) fail_at(index, chf.column, "CHF size must be positive");
+  if (size > lu + 1e-9 || size > lv + 1e-9) fail_at(index, chf.column, "CHF too large for the elements it joins");
   corner_ = CornerPlan{};
   corner_.active = true;
-  corner_.chamfer = rnd.keyword == "CHF";
-  double along = size;
-  if (!corner_.chamfer) {
-    double turn = std::acos(std::clamp(dot, -1.0, 1.0));
-    along = size * std::tan(turn / 2.0);
-  }
-  if (along > lu + 1e-9 || along > lv + 1e-9) fail_at(index, rnd.column, rnd.keyword + " too large for the elements it joins");
-  corner_.t1 = {corner.x - ux * along, corner.y - uy * along, corner.z};
-  corner_.t2 = {corner.x + vx * along, corner.y + vy * along, corner.z};
-  corner_.ccw = cross > 0;
-  double nx = corner_.ccw ? -uy : uy, ny = corner_.ccw ? ux : -ux;
-  corner_.centre = {corner_.t1.x + nx * size, corner_.t1.y + ny * size, corner.z};
+  corner_.chamfer = true;
+  corner_.t1 = {corner.x - ux * size, corner.y - uy * size, corner.z};
+  corner_.t2 = {corner.x + vx * size, corner.y + vy * size, corner.z};
 }
 
 bool Runner::path(const HBlock& b, std::size_t index) {
@@ -665,7 +651,7 @@ bool Runner::path(const HBlock& b, std::size_t index) {
           fail_at(j, nb2.column, "CHF joins two straight lines: the block after it is not L (use RND)");
         }
         ContourElement out = next_element(after_block, j2, end, j, nb2.column, pole);
-        plan_corner(nb2, j, here, end, out.end);
+        plan_chamfer(nb2, j, here, end, out.end);
       } else {
         ContourElement in{here, end, arc, cx, cy, cw};
         ContourElement out = next_element(after_block, j2, end, j, nb2.column, pole);
