@@ -504,3 +504,23 @@ TEST(Recognition, AreaReachingThePartEdgeWithoutCrossingItIsOpen) {
   ASSERT_EQ(f.open_sides.size(), 1u);
   EXPECT_EQ(f.open_sides[0], fr::OpenSide::YMinus);
 }
+
+// A pocket on the top level whose side runs out over a step cut deeper before it: open there, and
+// placed by the part of it that still had material (not by its extension over the step).
+TEST(Recognition, APocketOpeningOntoADeeperStepIsAnOpenPocket) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 10));
+  b.rapid(85, -10, 2).feed(85, -10, -10).feed(85, 90, -10).feed(95, 90, -10).feed(95, -10, -10).rapid(95, -10, 5);  // x+ step
+  for (double z : {-3.0, -5.0}) {  // x 60..80 extended to 86 over the step, y 30..50, to -5
+    b.rapid(65, 35, 2).feed(65, 35, z).feed(81, 35, z).feed(81, 45, z).feed(65, 45, z).feed(65, 35, z).rapid(65, 35, 5);
+  }
+  const auto features = fr::recognize(b.steps(), block());
+  ASSERT_EQ(features.size(), 2u);
+  EXPECT_EQ(features[0].type, fr::FeatureType::Step);
+  const auto& f = features[1];
+  EXPECT_EQ(f.type, fr::FeatureType::OpenPocket);
+  EXPECT_NEAR(f.x, 70, 0.1);
+  EXPECT_NEAR(f.y, 40, 0.1);
+  EXPECT_DOUBLE_EQ(f.top_z, 0);
+  EXPECT_DOUBLE_EQ(f.bottom_z, -5);
+}

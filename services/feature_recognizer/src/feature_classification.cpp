@@ -213,16 +213,25 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
 // The length of each side of the part (x-, x+, y-, y+) where material still stands above
 // `floor` when the group is cut: earlier groups cutting to that floor or deeper have removed the
 // rest. A step runs along most of what stands there.
-std::array<double, 4> standing_side_lengths(const MillingGroup& group, const std::vector<MillingGroup>& groups,
-                                            const PartEnvelope& part) {
+// What earlier features near the group cut to its floor or deeper: air at its level.
+Region removed_before(const MillingGroup& group, const std::vector<MillingGroup>& groups) {
+  Region removed;
+  auto near = group.area.bbox();
+  if (!near) return removed;
+  near->xmin -= 1, near->ymin -= 1, near->xmax += 1, near->ymax += 1;
+  for (const auto& g : groups) {
+    if (g.sequence < group.sequence && g.floor <= group.floor + 1e-3 && boxes_overlap(near, g.area.bbox())) {
+      removed = removed.united(g.area);
+    }
+  }
+  return removed;
+}
+
+std::array<double, 4> standing_side_lengths(const Region& removed, const PartEnvelope& part) {
   constexpr double kStrip = 1.0;
   const Box2& e = part.box;
   const Box2 strips[4] = {{e.xmin, e.ymin, e.xmin + kStrip, e.ymax}, {e.xmax - kStrip, e.ymin, e.xmax, e.ymax},
                           {e.xmin, e.ymin, e.xmax, e.ymin + kStrip}, {e.xmin, e.ymax - kStrip, e.xmax, e.ymax}};
-  Region removed;
-  for (const auto& g : groups) {
-    if (g.sequence < group.sequence && g.floor <= group.floor + 1e-3) removed = removed.united(g.area);
-  }
   std::array<double, 4> out{};
   for (int s = 0; s < 4; ++s) {
     out[s] = Region::rectangle(strips[s]).intersected(part.outline).minus(removed).area() / kStrip;
@@ -358,7 +367,18 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
     return out;
   }
 
-  const auto contact = open_contact(group.area, part);
+  auto contact = open_contact(group.area, part);
+  // Open also where the cut's outer edge runs into what earlier features cleared deeper (an open
+  // pocket on an upper level opening onto a step): a band just inside the edge, in that air.
+  const Region removed = removed_before(group, groups);
+  if (!removed.empty()) {
+    Region outer;
+    for (const auto& pwh : group.area.polygons()) outer = outer.united(Region::polygon(pwh.outer));
+    const Region edge = boundary_band(outer, kOpenBandWidth, 0.01).intersected(outer);
+    for (const auto& piece : edge.intersected(removed).components()) {
+      if (piece.area() >= 0.05 * kOpenBandWidth) contact.pieces.push_back(*piece.bbox());
+    }
+  }
   const bool all_center_lines = std::all_of(strategies.begin(), strategies.end(), [](const auto& s) {
     return s.strategy == Strategy::CenterMilling;
   });
@@ -393,14 +413,16 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   }
 
   f.open_sides = contact.sides;
-  f.x = fcenter.x, f.y = fcenter.y;
+  const Region standing_footprint = removed.empty() ? footprint : footprint.minus(removed);
+  const Point2 open_center = standing_footprint.area() > 0.05 * footprint.area() ? box_center(*standing_footprint.bbox()) : fcenter;
+  f.x = open_center.x, f.y = open_center.y;
   f.profile.outline = outline;
   f.profile.length = rect.length;
   f.profile.width = rect.width;
   f.profile.angle_deg = rect.angle_deg;
   f.profile.shape = ProfileShape::GeneralClosed;
 
-  const auto standing = standing_side_lengths(group, groups, part);
+  const auto standing = standing_side_lengths(removed, part);
   for (int s = 0; s < 4; ++s) {
     if (standing[s] > 1.0 && contact.coverage[s] >= 0.9 * standing[s]) {
       f.bottom = BottomCondition::None;
