@@ -134,6 +134,19 @@ TEST(Segmentation, FirstMotionAsFeedWarnsAndStartsThere) {
   ASSERT_EQ(warnings.size(), 1u);
 }
 
+TEST(Segmentation, RepeatedProbeWarningsAreSummedUpAfterTen) {
+  CanonicalStream s;
+  s.tool(1).spindle_cw(600).feed(100).rapid(0, 0, 5);
+  for (int i = 0; i < 25; ++i) s.add(canonical::StraightProbe{canonical::Pose{}});
+  s.end();
+  std::vector<Warning> warnings;
+  build_cc1(s.calls, paper_options(), &warnings);
+  ASSERT_EQ(warnings.size(), 11u);
+  EXPECT_NE(warnings[0].message.find("probing move (G38)"), std::string::npos);
+  EXPECT_EQ(warnings[10].message.rfind("15 more probing moves", 0), 0u) << warnings[10].message;
+  EXPECT_EQ(warnings[10].where.line, s.current_line() - 1);  // the last probe
+}
+
 TEST(Segmentation, WorkOffsetBecomesTheSetupOriginAndLaterChangesAreConverted) {
   CanonicalStream s;
   canonical::Pose g54;

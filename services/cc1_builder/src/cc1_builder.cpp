@@ -170,6 +170,31 @@ struct Cc1Builder::State {
   }
   void warn(const canonical::Source& s, std::string message) { warnings.push_back({where(s), std::move(message)}); }
 
+  // A warning a program may repeat on any number of lines: the first kRepeatedWarnings are
+  // given, the rest counted and summed up at the end, so that warnings do not grow with the
+  // program.
+  static constexpr int kRepeatedWarnings = 10;
+  struct Repeated {
+    std::string_view message, rest;
+    int count = 0;
+    canonical::Source last;
+  };
+  Repeated probes{"probing move (G38) is not machining: left out of the workplan", "more probing moves (G38) left out of the workplan"};
+  Repeated rigid_taps{"rigid tapping (G33.1) outside a canned cycle is left out of the workplan",
+                      "more rigid tapping moves (G33.1) left out of the workplan"};
+  void warn_repeated(Repeated& r, const canonical::Source& s) {
+    if (++r.count <= kRepeatedWarnings) {
+      warn(s, std::string(r.message));
+    } else {
+      r.last = s;
+    }
+  }
+  void sum_up(const Repeated& r) {
+    if (r.count > kRepeatedWarnings) {
+      warn(r.last, std::to_string(r.count - kRepeatedWarnings) + " " + std::string(r.rest) + " (the last here)");
+    }
+  }
+
   // ---- resources
   stepnc::ToolRef loaded_tool(const canonical::Source& s, const setup::Tool** info) {
     int number = m.tool;
@@ -480,12 +505,12 @@ struct Cc1Builder::State {
             [&](const canonical::ArcFeed& a) { arc_feed(c, a); },
             [&](const canonical::StraightProbe& p) {
               break_all();
-              warn(c.source, "probing move (G38) is not machining: left out of the workplan");
+              warn_repeated(probes, c.source);
               moved_to(point(c, p.end));
             },
             [&](const canonical::RigidTap&) {
               break_all();
-              warn(c.source, "rigid tapping (G33.1) outside a canned cycle is left out of the workplan");
+              warn_repeated(rigid_taps, c.source);
             },
             [&](const canonical::SetSpindleSpeed& s) { m.spindle_rpm = s.rpm; },
             [&](const canonical::StartSpindleClockwise&) { m.spindle = canonical::Direction::Clockwise; },
@@ -513,6 +538,8 @@ struct Cc1Builder::State {
 
   void finish() {
     break_all();
+    sum_up(probes);
+    sum_up(rigid_taps);
     const double secplane_z = options.security_plane_z.value_or(max_rapid_z.value_or(max_motion_z.value_or(0.0)));
     stepnc::Plane secplane;
     secplane.position.location.z = secplane_z;
