@@ -433,6 +433,30 @@ TEST(Heidenhain, QParameterFunctionsAndLabelCalls) {
   EXPECT_NE(err.message().find("divide by zero"), std::string::npos) << err.message();
 }
 
+TEST(Heidenhain, CallPgmRunsAnotherFileAndComesBack) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("ncbridge_callpgm_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir / "sub");
+  // the called program has its own LBL 1 (the caller's LBL 1 is elsewhere) and calls a third
+  std::ofstream(dir / "MAIN.H") << "0 BEGIN PGM MAIN MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n2 CALL PGM sub\\A.H\n"
+                                   "3 CALL PGM A\n4 L X+50 R0 FMAX\n5 END PGM MAIN MM\n6 LBL 1\n7 L X+99 R0 FMAX\n8 LBL 0\n";
+  std::ofstream(dir / "sub" / "A.H") << "0 BEGIN PGM A MM\n1 CALL LBL 1\n2 CALL PGM TNC:\\X\\B.H\n3 END PGM A MM\n"
+                                        "4 LBL 1\n5 L IX+1 R0 FMAX\n6 LBL 0\n";
+  std::ofstream(dir / "sub" / "B.H") << "0 BEGIN PGM B MM\n1 L IY+5 R0 FMAX\n2 END PGM B MM\n";
+  std::ofstream(dir / "A.h") << "0 BEGIN PGM A MM\n1 L IX+10 R0 FMAX\n2 END PGM A MM\n";
+  ncbridge::interpreter::Options options;
+  options.dialect = Dialect::Heidenhain;
+  options.subroutine_path = {dir / "sub"};
+  Collect sink;
+  ncbridge::interpreter::interpret_file(dir / "MAIN.H", options, sink);
+  auto e = sink.ends();
+  ASSERT_EQ(e.size(), 5u);
+  EXPECT_TRUE(near(e[1], 1, 0, 0));   // sub/A.H, its own LBL 1
+  EXPECT_TRUE(near(e[2], 1, 5, 0));   // TNC:\\X\\B.H by its file name, beside the calling program
+  EXPECT_TRUE(near(e[3], 11, 5, 0));  // A.h beside the main program (A, with .h)
+  EXPECT_TRUE(near(e[4], 50, 5, 0));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Heidenhain, RoundingBetweenTwoArcs) {
   // circles of radius 10 about (0,0) and (10,10) meet at (0,10) at a right angle; the rounding's
   // centre lies 8 from both centres: (5,5) + sqrt(14) (-1,1)/sqrt(2)
