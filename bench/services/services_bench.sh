@@ -14,6 +14,7 @@
 # `up` is given this script's Cyclone configuration (CYCLONEDDS_URI).
 set -euo pipefail
 BIN=$(cd "$1" && pwd); BATCH=${2:-200}; LARGE=${3:-100000}; REPEAT=${4:-3}; SUBMIT=${SUBMIT:-bulk}
+BATCH_LINES=${BATCH_LINES:-2000}  # G1+G2 pairs per batch program (4008 lines at 2000); LARGE=0 skips part 1
 SHARED=${SHARED:-$(cd "$(dirname "$0")/../../.." && pwd)/shared}
 T="$SHARED/corpus/paper/tools.json" S="$SHARED/corpus/paper/stock.json"
 W=$(mktemp -d /tmp/ncbridge-bench.XXXXXX)
@@ -56,6 +57,7 @@ same() {  # A B: byte-identical but for FILE_NAME (the names differ)
 }
 
 # 1. One large program.
+if (( LARGE > 0 )); then
 gen 1 "$LARGE" > "$W/large.ngc"
 up 1
 : > "$W/large-embedded.t"; : > "$W/large-services.t"
@@ -71,10 +73,11 @@ embedded=$(median < "$W/large-embedded.t"); services=$(median < "$W/large-servic
 printf 'large program (%d lines, %s bytes out): embedded %.2f s, services %.2f s, ratio %.2f  [runs: embedded %s; services %s]\n' \
   "$(wc -l < "$W/large.ngc")" "$(stat -c %s "$W/large-embedded.stp")" "$embedded" "$services" "$(echo "$services / $embedded" | bc -l)" \
   "$(tr '\n' ' ' < "$W/large-embedded.t")" "$(tr '\n' ' ' < "$W/large-services.t")"
+fi
 
 # 2. A batch.
 mkdir -p "$W/batch" "$W/emb"
-for k in $(seq 1 "$BATCH"); do gen "$k" 2000 > "$W/batch/p$k.ngc"; done
+for k in $(seq 1 "$BATCH"); do gen "$k" "$BATCH_LINES" > "$W/batch/p$k.ngc"; done
 embedded_loop() {
   local t0 t1; t0=$(now)
   for k in $(seq 1 "$BATCH"); do "$BIN/ncbridge" convert "$W/batch/p$k.ngc" --tools "$T" --stock "$S" -o "$W/emb/p$k.stp" 2>/dev/null; done

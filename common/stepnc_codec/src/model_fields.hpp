@@ -215,7 +215,7 @@ class Encoder {
       if (v) one(*v);
     } else if constexpr (is_variant<T>::value) {
       out_.push_back(static_cast<char>(v.index()));
-      std::visit([this](const auto& alt) { one(alt); }, v);
+      std::visit([&](const auto& alt) { one(alt); }, v);
     } else {
       fields(*this, v);
     }

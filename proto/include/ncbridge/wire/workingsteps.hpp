@@ -1,7 +1,7 @@
 #pragma once
-// A job's ISO 14649 model on the ncbridge/workingsteps and ncbridge/features topics
-// (proto/workingsteps.proto), and its codec. The model itself is opaque bytes here
-// (common/stepnc_codec makes and reads them).
+// One part (shell or chunk) of a job's ISO 14649 model on the ncbridge/workingsteps and
+// ncbridge/features topics (proto/workingsteps.proto), and its codec. The model bytes are opaque
+// here (common/stepnc_codec/project_stream.hpp makes and reads them).
 #include <cstdint>
 #include <string>
 #include <string_view>

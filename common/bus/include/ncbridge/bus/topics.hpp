@@ -9,9 +9,11 @@ namespace ncbridge::bus {
 enum class Topic : std::uint8_t {
   Programs,      // key = job_id,        subkey = ""         payload: proto Job
   Blocks,        // key = controller_id, subkey = run_id     payload: proto ExecutedBlock
-  Canonical,     // key = job_id,        subkey = ""         payload: proto CanonicalBatch
-  Workingsteps,  // key = job_id,        subkey = ""         payload: reserved (CC1 workingsteps)
-  Features,      // key = job_id,        subkey = ""         payload: reserved (CC2 workplan)
+  Canonical,     // key = job_id,        subkey = ""         payload: seq 0 proto Job (context), then CanonicalBatch
+  // The two model topics carry proto StepncModel samples: seq 0 the model's shell, then chunks
+  // of workplan elements with their features and operations (ncbridge/service/model_stream.hpp).
+  Workingsteps,  // key = job_id,        subkey = ""         payload: the CC1 model of a CC2 job (to recognise)
+  Features,      // key = job_id,        subkey = ""         payload: the model to write: CC2, or a CC1 job's CC1
   Part21,        // key = job_id,        subkey = "cc1"|"cc2" payload: proto Part21File
   Status,        // key = job_id,        subkey = stage      payload: proto JobStatus
   Workers,       // key = stage,         subkey = worker_id  payload: proto Worker
