@@ -106,6 +106,24 @@ TEST(StepncLayout, AWorkplanLongerThanAChunkIsHandedOnInBoundedPieces) {
   EXPECT_EQ(graph.at(graph.ids_of("WORKPLAN").at(0)).attributes()[1].as_list().size(), 200000u);
 }
 
+TEST(StepncLayout, AReferenceOutsideItsTableThrowsBeforeAnythingIsAllocatedForIt) {
+  sn::Project p = rapids(1, 50);
+  p.tools.push_back({});
+  p.technologies.push_back({});
+  p.machine_functions.push_back({});
+  p.features.emplace_back(sn::ToolpathFeature{});
+  sn::FreeformOperation op;
+  op.its_tool = sn::ToolRef{4000000000u};  // as a corrupt decoded message could hold
+  p.operations.emplace_back(op);
+  sn::MachiningWorkingstep ws;
+  ws.its_secplane = p.setup.its_secplane;
+  p.main_workplan.its_elements.emplace_back(ws);
+  EXPECT_THROW(write_stepnc(p, options()), std::out_of_range);
+  std::get<sn::FreeformOperation>(p.operations[0]).its_tool = sn::ToolRef{0};
+  std::get<sn::MachiningWorkingstep>(p.main_workplan.its_elements[1]).its_operation = sn::OperationRef{4000000000u};
+  EXPECT_THROW(write_stepnc(p, options()), std::out_of_range);
+}
+
 TEST(StepncStreamWriter, ElementByElementGivesTheWholeProjectsBytes) {
   const sn::Project whole = rapids(500, 12.5);
   std::string streamed;

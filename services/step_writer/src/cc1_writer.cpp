@@ -146,8 +146,10 @@ class Cc1Writer {
 
  private:
   // The written id of a table entry (0: not written yet); tables of a streamed project grow.
-  static InstanceId& written(std::vector<InstanceId>& ids, std::uint32_t index) {
-    if (index >= ids.size()) ids.resize(index + 1, 0);
+  // A reference outside its table (a decoded message can hold any index) throws.
+  static InstanceId& written(std::vector<InstanceId>& ids, std::uint32_t index, std::size_t table_size) {
+    if (index >= table_size) throw std::out_of_range("write_stepnc: a reference outside its table");
+    if (index >= ids.size()) ids.resize(table_size, 0);
     return ids[index];
   }
 
@@ -331,7 +333,7 @@ class Cc1Writer {
 
   // ---- resources
   InstanceId tool(sn::ToolRef r) {
-    InstanceId& id = written(tools_, r.index);
+    InstanceId& id = written(tools_, r.index, p_->tools.size());
     if (id != 0) return id;
     const sn::MillingCuttingTool& t = p_->tool(r);
     const auto& d = t.dimension;
@@ -378,7 +380,7 @@ class Cc1Writer {
     return id = s_.end();
   }
   InstanceId technology(sn::TechnologyRef r) {
-    InstanceId& id = written(technologies_, r.index);
+    InstanceId& id = written(technologies_, r.index, p_->technologies.size());
     if (id != 0) return id;
     const sn::MillingTechnology& t = p_->technology(r);
     s_.begin("MILLING_TECHNOLOGY");
@@ -394,7 +396,7 @@ class Cc1Writer {
     return id = s_.end();
   }
   InstanceId functions(sn::MachineFunctionsRef r) {
-    InstanceId& id = written(functions_, r.index);
+    InstanceId& id = written(functions_, r.index, p_->machine_functions.size());
     if (id != 0) return id;
     const sn::MillingMachineFunctions& f = p_->functions(r);
     s_.begin("MILLING_MACHINE_FUNCTIONS");
@@ -528,7 +530,7 @@ class Cc1Writer {
   }
 
   InstanceId operation(sn::OperationRef r) {
-    InstanceId& id = written(operations_, r.index);
+    InstanceId& id = written(operations_, r.index, p_->operations.size());
     if (id == 0) id = operation_instance(p_->operation(r));
     return id;
   }
@@ -616,7 +618,7 @@ class Cc1Writer {
   }
 
   InstanceId feature(sn::FeatureRef r) {
-    InstanceId& id = written(features_, r.index);
+    InstanceId& id = written(features_, r.index, p_->features.size());
     if (id != 0) return id;
     std::vector<InstanceId>& ops = feature_operation_ids_;
     ops.clear();
