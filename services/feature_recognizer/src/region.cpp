@@ -141,7 +141,8 @@ bool is_convex(const Path& path) {
 
 struct Region::Impl {
   Impl() = default;
-  Impl(const Impl& other) : components(other.components), area(other.area), box(other.box) {}  // tiles not copied
+  Impl(const Impl& other)  // the tiles are not copied: made again if needed
+      : components(other.components), area(other.area), box(other.box), vertices(other.vertices), is_box(other.is_box) {}
 
   struct Component {
     Path outer;   // positive area (counter-clockwise)
