@@ -48,7 +48,7 @@ std::vector<Case> corpus() {
           {"paper_test_part", paper / "test_part.ngc", paper, "test_part.ngc"},
           // Hand-designed parts of other shapes and strategies (parts/make_parts.py).
           part("p06_nested_pockets"), part("p07_helix_holes"), part("p08_multi_level"), part("p09_small_part"),
-          part("p10_plate"), part("p11_slots_rotated_pocket")};
+          part("p10_plate"), part("p11_slots_rotated_pocket"), part("p12_freecad_style")};
 }
 
 Case named(const std::string& name) {
@@ -198,7 +198,7 @@ INSTANTIATE_TEST_SUITE_P(Parts, CommentFreeCorpus,
                          testing::Values("p01_block_reference", "p02_plate_center_zero", "p03_bracket_steps",
                                          "p04_open_pockets", "p05_slots", "paper_face_mill", "paper_test_part",
                                          "p06_nested_pockets", "p07_helix_holes", "p08_multi_level", "p09_small_part",
-                                         "p10_plate", "p11_slots_rotated_pocket"));
+                                         "p10_plate", "p11_slots_rotated_pocket", "p12_freecad_style"));
 
 TEST(Cc2Convert, SameInputSameBytes) {
   const Case c = named("paper_test_part");

@@ -205,7 +205,7 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
     out.strategy = Strategy::Plunge;
     return out;
   }
-  for (const auto& run : runs) out.closed_loops += count_closed_loops(run, 4 * std::max(tool_r, 0.5));
+  for (const auto& run : runs) out.closed_loops += count_closed_loops(run, 2 * std::max(tool_r, 0.5));
 
   // Every move on one straight line (once, or back and forth): a slot along its centre line.
   if (on_one_line(straights)) {

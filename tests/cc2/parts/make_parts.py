@@ -650,6 +650,75 @@ def slots():
                p, tools, stock((0, 0, -20), (120, 70, 0), (0, 0, -20), (120, 70, 0), "part_top_corner"), features)
 
 
+# ---------------------------------------------------------------- (g) FreeCAD-style variations
+
+def helix_half_turns(prog, c, radii, top, bottom, pitch, f, ccw=False):
+    """Hole milling as FreeCAD's Helix operation posts it: per radius, a feed down to the top,
+    half-circle arcs falling pitch/2 each, a flat full circle at the bottom, a rapid to the centre
+    and up."""
+    for radius in radii:
+        a, b = (c[0] + radius, c[1]), (c[0] - radius, c[1])
+        prog.retract()
+        prog.rapid(a[0], a[1])
+        prog.feed(a[0], a[1], top, f / 2)
+        turns = max(2, int(math.ceil((top - bottom) / pitch)))
+        for k in range(1, turns + 1):
+            prog.arc(ccw, b[0], b[1], top - (top - bottom) * (2 * k - 1) / (2 * turns), c[0], c[1], f)
+            prog.arc(ccw, a[0], a[1], top - (top - bottom) * (2 * k) / (2 * turns), c[0], c[1], f)
+        prog.arc(ccw, b[0], b[1], bottom, c[0], c[1], f)
+        prog.arc(ccw, a[0], a[1], bottom, c[0], c[1], f)
+        prog.rapid(c[0], c[1], bottom)
+        prog.retract()
+
+
+def variations():
+    tools = [tool(1, "EndMill_D6", "flat_end_mill", 6, 10000, 600, 150),
+             tool(2, "EndMill_D10", "flat_end_mill", 10, 7000, 800, 200)]
+    p = Program(safe=12, clearance=3)
+    p.tool(1, 10000)
+    helix_half_turns(p, (15, 15), [1.5], 0, -12, 1.5, 600)             # D9 blind, one radius
+    helix_half_turns(p, (40, 15), [1.5, 4.5], 0, -30.5, 2, 600)        # D15 through, inner first
+    start, segs = circle_contour((75, 15), 8, ccw=True)                 # D22 bored by one circle
+    contour_levels(p, start, segs, [-3.0, -6.0, -9.0], 0, 600, 150)     # per level, core left
+    # open pocket from the y+ edge, not extended: the outer ring's tool edge runs along y = 90
+    pocket_offset(p, (67.5, 82.5), 7.5, 7.5, 3, 0, 3, 0.0, 2.5, [-3.0, -6.0], 0, 600, 150, inside_out=False)
+    p.tool(2, 7000)
+    # a pocket and a large pocket nested in its floor, one after the other with the same tool
+    pocket_offset(p, (30, 55), 25, 15, 5, 0, 5, 0.0, 4.0, [-4.0, -8.0], 0, 800, 200, inside_out=False)
+    pocket_offset(p, (30, 55), 20, 11, 5, 0, 5, 0.0, 4.0, [-11.0, -14.0], -8, 800, 200, inside_out=False)
+    # x+ step to -20, then a pocket on the top level running out over it
+    zigzag_lines(p, [((x, -8), (x, 98)) for x in (105, 113, 121)], levels_down(0, -20, 5), 0, 800, 200)
+    pocket_offset(p, (93, 65), 13, 10, 3, 0, 5, 0.0, 4.0, [-5.0, -10.0], 0, 800, 200, inside_out=False)
+    start, segs = rounded_rectangle((60, 45), 60 + 5, 45 + 5, 5, 0, ccw=False)
+    contour_levels(p, start, segs, levels_down(0, -30, 7.5), 0, 800, 200)
+    features = [
+        feature("F1", "round_hole", (15, 15), 0.0, -12.0, [op("bottom_and_side_rough_milling", 1, "helical")],
+                dimensions={"diameter": 9}, bottom_condition="flat"),
+        feature("F2", "round_hole", (40, 15), 0.0, -30.0, [op("bottom_and_side_rough_milling", 1, "helical")],
+                dimensions={"diameter": 15}, bottom_condition="through"),
+        feature("F3", "round_hole", (75, 15), 0.0, -9.0, [op("bottom_and_side_rough_milling", 1, "contour")],
+                dimensions={"diameter": 22}, bottom_condition="flat", note="one circle per level, its core a chip"),
+        feature("F4", "open_pocket", (67.5, 82.5), 0.0, -6.0, [op("bottom_and_side_rough_milling", 1, "contour_parallel")],
+                open_sides=["y+"], region_xy=[60, 75, 75, 90]),
+        feature("F5", "closed_pocket", (30, 55), 0.0, -8.0, [op("bottom_and_side_rough_milling", 2, "contour_parallel")],
+                shape="rounded_rectangle", dimensions={"length": 50, "width": 30, "corner_radius": 5, "angle_deg": 0}),
+        feature("F6", "closed_pocket", (30, 55), -8.0, -14.0, [op("bottom_and_side_rough_milling", 2, "contour_parallel")],
+                shape="rounded_rectangle", dimensions={"length": 40, "width": 22, "corner_radius": 5, "angle_deg": 0},
+                note="nested in F5's floor, cut right after it with the same tool"),
+        feature("F7", "step", (110, 45), 0.0, -20.0, [op("bottom_and_side_rough_milling", 2, "bidirectional")],
+                open_sides=["x+"], region_xy=[100, 0, 120, 90]),
+        feature("F8", "open_pocket", (90, 65), 0.0, -10.0, [op("bottom_and_side_rough_milling", 2, "contour_parallel")],
+                region_xy=[80, 55, 100, 75], note="opens onto the step F7"),
+        feature("F9", "general_outside_profile", (60, 45), 0.0, -30.0, [op("side_finish_milling", 2, "contour")],
+                outline="rectangle 120 x 90"),
+    ]
+    write_part("p12_freecad_style", "120x90x30 block, zero at the top front left corner: holes milled as FreeCAD's "
+               "Helix posts them (half-circle arcs), a bore by one circle per level, an open pocket not extended "
+               "beyond its open side, a large pocket nested in a pocket cut with the same tool, a step and a pocket "
+               "running out over it, the outside profile",
+               p, tools, stock((-3, -3, -30), (123, 93, 0), (0, 0, -30), (120, 90, 0), "part_top_corner"), features)
+
+
 if __name__ == "__main__":
     nested_pockets()
     helix_holes()
@@ -657,3 +726,4 @@ if __name__ == "__main__":
     small_part()
     plate()
     slots()
+    variations()
