@@ -96,6 +96,19 @@ TEST(ProjectStream, BadPartsAreInputErrors) {
     const std::string& c = parts.chunks[0];
     for (std::size_t n = 0; n < c.size(); n += 1 + n / 16) EXPECT_THROW(joiner.chunk(c.substr(0, n)), InputError) << n;
   }
+  // Flipping any byte of a chunk either still decodes (a value changed) or is rejected: never a crash.
+  for (const std::string& c : parts.chunks) {
+    for (std::size_t i = 0; i < c.size(); i += 3) {
+      std::string flipped = c;
+      flipped[i] = static_cast<char>(flipped[i] ^ 0x5A);
+      stepnc_codec::ProjectJoiner joiner;
+      joiner.shell(parts.shell);
+      try {
+        joiner.chunk(flipped);
+      } catch (const InputError&) {
+      }
+    }
+  }
   {
     // A chunk whose workingstep names a feature and operation that have not come.
     stepnc::Project q;
