@@ -14,6 +14,8 @@ std::string encode_part21(const Part21File& file) {
   m.set_file_name(file.file_name);
   m.set_content(file.content);
   m.set_sha256(std::string(file.sha256.begin(), file.sha256.end()));
+  m.set_seq(file.seq);
+  m.set_more(file.more);
   return m.SerializeAsString();
 }
 
@@ -30,6 +32,8 @@ Part21File decode_part21(std::string_view bytes) {
   if (m.sha256().size() != f.sha256.size())
     malformed(what, "sha256 digest has " + std::to_string(m.sha256().size()) + " bytes, not 32");
   std::copy(m.sha256().begin(), m.sha256().end(), f.sha256.begin());
+  f.seq = m.seq();
+  f.more = m.more();
   return f;
 }
 

@@ -1,13 +1,16 @@
 // ncbridge-step-writer: the step_writer stage as a DDS service. A job's model stream from the
 // features topic (ncbridge/service/model_stream.hpp) is decoded chunk by chunk as it arrives,
 // then written as a Part 21 file with the same library calls (and so the same bytes) as
-// `ncbridge convert`: into --output-dir (atomically), and onto the part21 topic with its digest.
+// `ncbridge convert`: into --output-dir (atomically), and onto the part21 topic in pieces of
+// about 1 MB as it is written, each with its digest.
 // Results stay on the part21 topic for late readers within the retention policy (--retain-*).
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "ncbridge/bus/topics.hpp"
 #include "ncbridge/common/error.hpp"
@@ -30,6 +33,9 @@ void check_output_name(const std::string& name) {
     throw InputError({"<stepnc model>", 0, 0}, "output name \"" + name + "\" is not a plain file name");
 }
 
+// A file is published in pieces of about this size (proto/part21.proto).
+constexpr std::size_t kPieceBytes = std::size_t{1} << 20;
+
 class WriterStream final : public service::JobStream {
  public:
   WriterStream(service::JobContext& context, const std::filesystem::path& output_dir)
@@ -46,14 +52,28 @@ class WriterStream final : public service::JobStream {
     step_writer::StepncWriteOptions options;
     options.file_name = header.output_name;
     if (header.level == wire::ModelLevel::Cc2) options.description = {"ISO 14649 CC2 program written by ncbridge"};  // as convert
-    wire::Part21File file;
-    file.job_id = context_.job_id();
-    file.level = header.level == wire::ModelLevel::Cc2 ? wire::Part21Level::Cc2 : wire::Part21Level::Cc1;
-    file.file_name = header.output_name;
-    file.content = step_writer::write_stepnc(project, options);
-    file.sha256 = service::sha256(file.content);
-    if (!output_dir_.empty()) step_writer::write_file_atomically(output_dir_ / file.file_name, file.content);
-    context_.publish(file.level == wire::Part21Level::Cc2 ? "cc2" : "cc1", 0, 0, true, wire::encode_part21(file));
+    wire::Part21File piece;
+    piece.job_id = context_.job_id();
+    piece.level = header.level == wire::ModelLevel::Cc2 ? wire::Part21Level::Cc2 : wire::Part21Level::Cc1;
+    piece.file_name = header.output_name;
+    const std::string subkey = piece.level == wire::Part21Level::Cc2 ? "cc2" : "cc1";
+    std::optional<step_writer::AtomicFile> file;
+    if (!output_dir_.empty()) file.emplace(output_dir_ / piece.file_name);
+    // The file goes out in pieces as it is written: the reader receives while the writer writes.
+    const auto publish = [&](bool last) {
+      piece.sha256 = service::sha256(piece.content);
+      piece.more = !last;
+      context_.publish(subkey, piece.seq, 0, last, wire::encode_part21(piece));
+      if (file) file->write(piece.content);
+      piece.content.clear();
+      ++piece.seq;
+    };
+    step_writer::write_stepnc(project, options, [&](std::string_view bytes) {
+      piece.content.append(bytes);
+      if (piece.content.size() >= kPieceBytes) publish(false);
+    });
+    publish(true);
+    if (file) file->commit();
   }
 
  private:

@@ -87,6 +87,9 @@ TEST(WirePart21, RoundTripAndDigestLength) {
   Part21File f{"j9", Part21Level::Cc2, "j9_cc2.stp", "ISO-10303-21;\nHEADER;\n...", {}};
   for (std::size_t i = 0; i < f.sha256.size(); ++i) f.sha256[i] = static_cast<std::uint8_t>(i * 7);
   EXPECT_EQ(decode_part21(encode_part21(f)), f);
+  f.seq = 41;  // a piece of a file, more to come
+  f.more = true;
+  EXPECT_EQ(decode_part21(encode_part21(f)), f);
   // A digest of the wrong length: job_id "j", sha256 (field 5) of 3 bytes.
   EXPECT_THROW(decode_part21(std::string("\x0a\x01j\x2a\x03\x01\x02\x03", 8)), InputError);
 }

@@ -7,7 +7,8 @@
 // only jobs in flight. KEEP_LAST, not KEEP_ALL, on the writer: Cyclone 0.10 never drops a
 // KEEP_ALL transient-local history, unregistered or not (measured: tests/bus). Readers are
 // KEEP_ALL, so a slow reader slows the writer (flow control) and never loses a sample.
-// Results and state (part21, status, workers) keep the latest sample per instance, durable, so
+// Results (part21: a file in pieces) keep every piece until the writer unregisters the file (its
+// retention policy). State (status, workers) keeps the latest sample per instance, durable, so
 // a late reader sees the current state. Workers carry a liveliness lease and dispose their
 // instance when their writer is deleted: readers learn of a clean exit at once and of a crash
 // when the lease (and the participant lease, deploy/cyclonedds/) runs out.
@@ -55,7 +56,7 @@ QosProfile qos_profile(Topic topic) {
     case Topic::Features:
       return job_input(4096);
     case Topic::Part21:
-      return latest_state(1);
+      return job_input(4096);    // a file in pieces of ~1 MB, one instance a file
     case Topic::Status:
       return latest_state(64);  // a reader may fall behind a fast stage's progress reports
     case Topic::Workers: {

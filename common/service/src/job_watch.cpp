@@ -43,10 +43,14 @@ std::set<std::string> JobWatch::wait_all(std::chrono::milliseconds timeout,
     }
     for (const bus::Received& r : part21_.take(std::chrono::milliseconds(0))) {
       if (!r.has_data || !pending_.contains(r.envelope.key)) continue;
-      wire::Part21File file = wire::decode_part21(r.envelope.payload);
-      if (sha256(file.content) != file.sha256)
-        throw InputError({"<part21 file>", 0, 0}, "the file of job " + r.envelope.key + " does not match its SHA-256 digest");
+      wire::Part21File piece = wire::decode_part21(r.envelope.payload);
+      if (piece.job_id != r.envelope.key || sha256(piece.content) != piece.sha256)
+        throw InputError({"<part21 file>", 0, 0}, "piece " + std::to_string(piece.seq) + " of the file of job " +
+                                                      r.envelope.key + " does not match its SHA-256 digest");
+      std::optional<wire::Part21File> file = add_piece(std::move(piece));
+      if (!file) continue;
       pending_.erase(r.envelope.key);
+      incoming_.erase(r.envelope.key);
       JobOutcome o;
       o.file = std::move(file);
       on_over(r.envelope.key, std::move(o));
@@ -56,6 +60,26 @@ std::set<std::string> JobWatch::wait_all(std::chrono::milliseconds timeout,
     wait_set_.wait(std::min(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now), std::chrono::milliseconds(200)));
   }
   return pending_;
+}
+
+std::optional<wire::Part21File> JobWatch::add_piece(wire::Part21File piece) {
+  Incoming& in = incoming_[piece.job_id];
+  const std::uint64_t next = in.file ? in.file->seq + 1 : 0;
+  if (piece.seq < next) return std::nullopt;  // a duplicate (a redo by another writer)
+  in.ahead.emplace(piece.seq, std::move(piece));
+  for (auto it = in.ahead.begin(); it != in.ahead.end() && it->first == (in.file ? in.file->seq + 1 : 0);
+       it = in.ahead.erase(it)) {
+    if (!in.file) {
+      in.file = std::move(it->second);
+    } else {
+      in.file->content += it->second.content;
+      in.file->seq = it->second.seq;
+      in.file->more = it->second.more;
+      in.file->sha256 = it->second.sha256;
+    }
+    if (!in.file->more) return std::move(in.file);
+  }
+  return std::nullopt;
 }
 
 }  // namespace ncbridge::service

@@ -241,6 +241,7 @@ struct StageRunner::State {
     for (auto& w : other_outputs) writers.push_back(w.get());
     a.context = std::make_unique<JobContext>(std::move(writers), job_id, progress);
     slot = &active.emplace(job_id, std::move(a)).first->second;
+    spdlog::info("job {}: started", job_id);
     wire::JobStatus running;
     running.job_id = job_id;
     running.state = wire::JobState::Running;

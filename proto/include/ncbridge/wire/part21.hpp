@@ -1,5 +1,6 @@
 #pragma once
-// A written ISO 10303-21 file on the ncbridge/part21 topic (proto/part21.proto), and its codec.
+// A written ISO 10303-21 file, or one piece of it, on the ncbridge/part21 topic
+// (proto/part21.proto), and its codec.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -15,6 +16,8 @@ struct Part21File {
   std::string file_name;
   std::string content;
   std::array<std::uint8_t, 32> sha256{};   // digest of content, computed by the writer
+  std::uint64_t seq = 0;                   // piece number
+  bool more = false;                       // pieces follow this one
   friend bool operator==(const Part21File&, const Part21File&) = default;
 };
 

@@ -5,6 +5,7 @@
 // One watch serves any number of jobs on one participant (a bulk submit).
 #include <chrono>
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -19,7 +20,9 @@
 namespace ncbridge::service {
 
 struct JobOutcome {
-  std::optional<wire::Part21File> file;   // set when the job is done
+  // Set when the job is done: the file's pieces joined (each piece's digest checked; `sha256`
+  // is that of the last piece, `more` false).
+  std::optional<wire::Part21File> file;
   std::optional<wire::JobStatus> error;   // set when a stage rejected it
   bool timed_out() const { return !file && !error; }
 };
@@ -41,7 +44,16 @@ class JobWatch {
                                  const std::function<void(const wire::JobStatus&)>& on_status = {});
 
  private:
+  // A file whose pieces are coming: the joined pieces so far, and those ahead of a gap.
+  struct Incoming {
+    std::optional<wire::Part21File> file;
+    std::map<std::uint64_t, wire::Part21File> ahead;
+  };
+  // Adds a piece; returns the whole file when this piece completed it.
+  std::optional<wire::Part21File> add_piece(wire::Part21File piece);
+
   std::set<std::string> pending_;
+  std::map<std::string, Incoming> incoming_;
   bus::Reader status_;
   bus::Reader part21_;
   bus::WaitSet wait_set_;
