@@ -214,12 +214,13 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
 // `floor` when the group is cut: earlier groups cutting to that floor or deeper have removed the
 // rest. A step runs along most of what stands there.
 // What earlier features near the group cut to its floor or deeper: air at its level.
-Region removed_before(const MillingGroup& group, const std::vector<MillingGroup>& groups) {
+Region removed_before(const MillingGroup& group, const std::vector<MillingGroup>& groups, const PartEnvelope& part) {
   Region removed;
   auto near = group.area.bbox();
   if (!near) return removed;
   near->xmin -= 1, near->ymin -= 1, near->xmax += 1, near->ymax += 1;
-  for (const auto& g : groups) {
+  for (auto index : part.groups_by_box.candidates(*near)) {
+    const auto& g = groups[index];
     if (g.sequence < group.sequence && g.floor <= group.floor + 1e-3 && boxes_overlap(near, g.area.bbox())) {
       removed = removed.united(g.area);
     }
@@ -258,6 +259,7 @@ PartEnvelope find_part_envelope(const std::vector<MillingGroup>& groups, const s
   part.bottom_z = stock.min[2];
   std::optional<double> profile_floor;
   for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (auto box = groups[g].area.bbox()) part.groups_by_box.insert(g, *box);
     if (groups[g].freeform) continue;
     if (auto inside = surrounded_part(groups[g], stock_rect)) {
       part.outline = part.outline.intersected(*inside);
@@ -370,7 +372,7 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   auto contact = open_contact(group.area, part);
   // Open also where the cut's outer edge runs into what earlier features cleared deeper (an open
   // pocket on an upper level opening onto a step): a band just inside the edge, in that air.
-  const Region removed = removed_before(group, groups);
+  const Region removed = removed_before(group, groups, part);
   if (!removed.empty()) {
     Region outer;
     for (const auto& pwh : group.area.polygons()) outer = outer.united(Region::polygon(pwh.outer));

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "box_index.hpp"
 #include "feature_grouping.hpp"
 #include "ncbridge/setup/stock.hpp"
 
@@ -20,6 +21,7 @@ struct PartEnvelope {
   Region outside_band;  // a thin band just outside `outline`: cuts reaching it are open there
   double bottom_z = 0;  // the stock's bottom, or the deepest outside profile's floor
   std::vector<std::size_t> outside_profiles;  // indices of the groups that cut around the part
+  BoxIndex groups_by_box{25.0};  // every group by its area's box: the groups near one, quickly
 };
 
 // Half-width of the band that tells open boundaries (mm).
