@@ -14,7 +14,10 @@
 # `up` is given this script's Cyclone configuration (CYCLONEDDS_URI).
 set -euo pipefail
 BIN=$(cd "$1" && pwd); BATCH=${2:-200}; LARGE=${3:-100000}; REPEAT=${4:-3}; SUBMIT=${SUBMIT:-bulk}
-BATCH_LINES=${BATCH_LINES:-2000}  # G1+G2 pairs per batch program (4008 lines at 2000); LARGE=0 skips part 1
+BATCH_LINES=${BATCH_LINES:-2000}  # G1+G2 pairs per batch program (4008 lines at 2000); LARGE=0 skips part 1, BATCH=0 the rest
+# LARGE_SPLIT=N: the large program lifts, moves and plunges again every N pairs, so it is many
+# workingsteps (default 0: one huge workingstep)
+LARGE_SPLIT=${LARGE_SPLIT:-0}
 SHARED=${SHARED:-$(cd "$(dirname "$0")/../../.." && pwd)/shared}
 T="$SHARED/corpus/paper/tools.json" S="$SHARED/corpus/paper/stock.json"
 W=$(mktemp -d /tmp/ncbridge-bench.XXXXXX)
@@ -41,7 +44,9 @@ now() { date +%s.%N; }
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 gen() {  # K LINES
   echo "G21 G17 G90 G94 G54"; echo "T1 M6"; echo "S$((1000 + $1)) M3"; echo "G0 X0 Y0 Z10"; echo "G1 Z-1 F300"
-  awk -v n="$2" -v k="$1" 'BEGIN { for (i = 0; i < n; i++) printf "G1 X%.3f Y%.3f\nG2 X%.3f Y%.3f I2 J0\n", (i*7+k)%80, (i*3)%50, (i*7+k)%80+4, (i*3)%50 }'
+  awk -v n="$2" -v k="$1" -v every="${3:-0}" 'BEGIN { for (i = 0; i < n; i++) {
+    if (every > 0 && i > 0 && i % every == 0) printf "G0 Z10\nG0 X%.3f Y%.3f\nG1 Z-1 F300\n", (i*7+k)%80, (i*3)%50
+    printf "G1 X%.3f Y%.3f\nG2 X%.3f Y%.3f I2 J0\n", (i*7+k)%80, (i*3)%50, (i*7+k)%80+4, (i*3)%50 } }'
   echo "G0 Z10"; echo "M5"; echo "M30"
 }
 up() {  # WORKERS
@@ -58,7 +63,7 @@ same() {  # A B: byte-identical but for FILE_NAME (the names differ)
 
 # 1. One large program.
 if (( LARGE > 0 )); then
-gen 1 "$LARGE" > "$W/large.ngc"
+gen 1 "$LARGE" "$LARGE_SPLIT" > "$W/large.ngc"
 up 1
 : > "$W/large-embedded.t"; : > "$W/large-services.t"
 for _ in $(seq 1 "$REPEAT"); do
@@ -74,6 +79,7 @@ printf 'large program (%d lines, %s bytes out): embedded %.2f s, services %.2f s
   "$(wc -l < "$W/large.ngc")" "$(stat -c %s "$W/large-embedded.stp")" "$embedded" "$services" "$(echo "$services / $embedded" | bc -l)" \
   "$(tr '\n' ' ' < "$W/large-embedded.t")" "$(tr '\n' ' ' < "$W/large-services.t")"
 fi
+(( BATCH > 0 )) || exit 0
 
 # 2. A batch.
 mkdir -p "$W/batch" "$W/emb"

@@ -1,9 +1,10 @@
 // ncbridge-cc1-builder: the cc1_builder stage as a DDS service. A job's canonical stream
 // (context, then batches: ncbridge/service/canonical_stream.hpp) is fed to the builder batch by
 // batch as it arrives, while the interpreter is still at work; the finished CC1 model is
-// published as a model stream (ncbridge/service/model_stream.hpp): on the workingsteps topic for
-// the feature_recognizer when the job asks for CC2, else on the features topic, straight to the
-// step writer (a CC1 job skips the recognizer).
+// published as a model stream (ncbridge/service/model_stream.hpp) on the workingsteps topic for
+// the feature_recognizer when the job asks for CC2. A CC1 job skips the recognizer: its workplan
+// elements go to the step writer on the features topic in chunks as the builder finishes them,
+// the project's shell at the end.
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
@@ -23,6 +24,17 @@ namespace {
 
 using namespace ncbridge;
 
+class ElementsOut final : public cc1_builder::WorkplanSink {
+ public:
+  explicit ElementsOut(service::ElementPublisher& publisher) : publisher_(publisher) {}
+  void element(const stepnc::Project& project, const stepnc::Executable& element) override {
+    publisher_.element(project, element);
+  }
+
+ private:
+  service::ElementPublisher& publisher_;
+};
+
 class Cc1Stream final : public service::JobStream {
  public:
   explicit Cc1Stream(service::JobContext& context) : context_(context) {}
@@ -35,9 +47,13 @@ class Cc1Stream final : public service::JobStream {
       cc1_builder::Options options;
       options.tools = setup::ToolList(job.tools);
       options.stock = job.stock;
-      builder_ = std::make_unique<cc1_builder::Cc1Builder>(options);
       header_.requested = job.level == wire::ConformanceClass::Cc2 ? wire::ModelLevel::Cc2 : wire::ModelLevel::Cc1;
       header_.output_name = job.output_name.empty() ? context_.job_id() + ".stp" : job.output_name;
+      if (header_.requested == wire::ModelLevel::Cc1) {
+        publisher_ = std::make_unique<service::ElementPublisher>(context_, bus::Topic::Features, header_);
+        elements_ = std::make_unique<ElementsOut>(*publisher_);
+      }
+      builder_ = std::make_unique<cc1_builder::Cc1Builder>(options, elements_.get());
       return;
     }
     if (sample.kind != service::kCanonicalBatch)
@@ -54,15 +70,16 @@ class Cc1Stream final : public service::JobStream {
     builder_->end();
     for (const auto& w : builder_->warnings())
       spdlog::warn("job {}: {}: {}", context_.job_id(), w.where.to_string(), w.message);
-    // A CC1 job has nothing to recognise: its model goes straight to the step writer.
-    const bool cc2 = header_.requested == wire::ModelLevel::Cc2;
-    service::publish_model(context_, cc2 ? bus::Topic::Workingsteps : bus::Topic::Features, header_, builder_->take_project());
+    if (publisher_) publisher_->finish(builder_->take_project());
+    else service::publish_model(context_, bus::Topic::Workingsteps, header_, builder_->take_project());
   }
 
  private:
   service::JobContext& context_;
-  std::unique_ptr<cc1_builder::Cc1Builder> builder_;
   service::ModelHeader header_;
+  std::unique_ptr<service::ElementPublisher> publisher_;  // a CC1 job's elements, as they are finished
+  std::unique_ptr<ElementsOut> elements_;
+  std::unique_ptr<cc1_builder::Cc1Builder> builder_;
 };
 
 }  // namespace

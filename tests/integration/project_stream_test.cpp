@@ -13,6 +13,7 @@
 #include "ncbridge/setup/stock.hpp"
 #include "ncbridge/setup/tool_list.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
+#include "ncbridge/step_writer/stepnc_stream_writer.hpp"
 #include "ncbridge/stepnc_codec/project_stream.hpp"
 
 namespace ncbridge {
@@ -50,6 +51,105 @@ stepnc::Project joined(const stepnc_codec::ProjectParts& parts) {
 }
 
 const std::string kShared = NCBRIDGE_SHARED_DIR;
+
+// Streamed CC1 across the bus: the builder's elements cut into element chunks of about
+// `chunk_bytes`, then the shell of the finished project.
+struct StreamedModel {
+  std::vector<std::string> chunks;
+  stepnc::Project shell;
+};
+
+class Chunking final : public cc1_builder::WorkplanSink {
+ public:
+  explicit Chunking(std::size_t chunk_bytes) : chunk_bytes_(chunk_bytes) {}
+  void element(const stepnc::Project& project, const stepnc::Executable& element) override {
+    chunker_.element(project, element);
+    if (chunker_.bytes() >= chunk_bytes_) out.chunks.push_back(chunker_.take_chunk(project));
+  }
+  void finish(stepnc::Project project) {
+    if (chunker_.elements() > 0) out.chunks.push_back(chunker_.take_chunk(project));
+    out.shell = std::move(project);
+  }
+  StreamedModel out;
+
+ private:
+  std::size_t chunk_bytes_;
+  stepnc_codec::ElementChunker chunker_;
+};
+
+StreamedModel streamed_cc1(const std::string& dir, const std::string& program, std::size_t chunk_bytes) {
+  cc1_builder::Options options;
+  options.tools = setup::read_tool_list(dir + "tools.json");
+  options.stock = setup::read_stock(dir + "stock.json");
+  interpreter::Options interp;
+  interp.tools = options.tools;
+  Chunking chunking(chunk_bytes);
+  cc1_builder::Cc1Builder builder(options, &chunking);
+  interpreter::interpret_file(dir + program, interp, builder);
+  chunking.finish(builder.take_project());
+  return std::move(chunking.out);
+}
+
+std::string written_from_chunks(const StreamedModel& m) {
+  step_writer::StepncWriteOptions o;
+  o.file_name = "x.stp";
+  o.unix_time = 0;
+  std::string text;
+  step_writer::StepncStreamWriter writer(o, [&](std::string_view bytes) { text += bytes; });
+  stepnc_codec::ElementUnchunker unchunker;
+  for (const std::string& c : m.chunks)
+    unchunker.chunk(c, [&](const stepnc::Project& p, const stepnc::Executable& e) { writer.element(p, e); });
+  writer.finish(m.shell);
+  return text;
+}
+
+TEST(ProjectStream, StreamedCc1ElementChunksWriteTheWholeModelsFile) {
+  const std::vector<std::pair<std::string, std::string>> programs{{kShared + "/corpus/paper/", "face_mill.ngc"},
+                                                                  {kShared + "/corpus/paper/", "test_part.ngc"},
+                                                                  {kShared + "/corpus/cam/p01_block_reference/", "part.nc"}};
+  for (const auto& [dir, program] : programs) {
+    const std::string expected = written(cc1(dir, program));
+    for (const std::size_t chunk_bytes : {std::size_t{1}, std::size_t{4096}, std::size_t{1} << 20}) {
+      const StreamedModel m = streamed_cc1(dir, program, chunk_bytes);
+      ASSERT_FALSE(m.chunks.empty()) << program;
+      if (chunk_bytes == 1) {
+        EXPECT_GT(m.chunks.size(), 2u) << program;
+      }
+      EXPECT_EQ(written_from_chunks(m), expected) << program << " in chunks of " << chunk_bytes;
+    }
+  }
+}
+
+TEST(ProjectStream, BadElementChunksAreInputErrors) {
+  const StreamedModel m = streamed_cc1(kShared + "/corpus/paper/", "test_part.ngc", 1);
+  ASSERT_GT(m.chunks.size(), 2u);
+  const auto ignore = [](const stepnc::Project&, const stepnc::Executable&) {};
+  // The second chunk alone: it names tools and technologies that came with the first.
+  bool second_alone_rejected = false;
+  for (std::size_t i = 1; i < m.chunks.size() && !second_alone_rejected; ++i) {
+    try {
+      stepnc_codec::ElementUnchunker fresh;
+      fresh.chunk(m.chunks[i], ignore);
+    } catch (const InputError&) {
+      second_alone_rejected = true;
+    }
+  }
+  EXPECT_TRUE(second_alone_rejected) << "no later chunk needs what an earlier one brought";
+  stepnc_codec::ElementUnchunker u;
+  EXPECT_THROW(u.chunk(m.chunks[0].substr(0, m.chunks[0].size() - 1), ignore), InputError);
+  EXPECT_THROW(u.chunk("NCBS" + m.chunks[0].substr(4), ignore), InputError);
+  EXPECT_THROW(u.chunk(m.chunks[0] + "x", ignore), InputError);
+  // Every truncation and every flipped byte: decoded or rejected, never a crash.
+  for (std::size_t i = 0; i < m.chunks[0].size(); ++i) {
+    std::string bad = m.chunks[0];
+    bad[i] = static_cast<char>(bad[i] ^ 0x5A);
+    try {
+      stepnc_codec::ElementUnchunker fresh;
+      fresh.chunk(bad, ignore);
+    } catch (const InputError&) {
+    }
+  }
+}
 
 TEST(ProjectStream, CorpusModelsJoinBackToTheSameFile) {
   std::vector<std::pair<std::string, std::string>> programs{{kShared + "/corpus/paper/", "face_mill.ngc"},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <span>
+#include <stdexcept>
 
 #include "model_fields.hpp"
 
@@ -128,6 +129,78 @@ Project ProjectJoiner::take() {
   project_ = Project{};
   has_shell_ = false;
   return out;
+}
+
+}  // namespace ncbridge::stepnc_codec
+
+namespace ncbridge::stepnc_codec {
+namespace {
+
+constexpr std::string_view kElementsMagic = "NCBE";
+
+template <class T>
+std::vector<T> added_since(const std::vector<T>& table, std::size_t& sent) {
+  if (table.size() < sent) throw std::logic_error("ElementChunker: a project table shrank");
+  std::vector<T> added(table.begin() + static_cast<std::ptrdiff_t>(sent), table.end());
+  sent = table.size();
+  return added;
+}
+
+}  // namespace
+
+void ElementChunker::element(const Project& project, const Executable& element) {
+  Encoder enc(body_);
+  enc(element);
+  if (const auto* ws = std::get_if<MachiningWorkingstep>(&element))
+    enc(project.feature(ws->its_feature), project.operation(ws->its_operation));
+  ++elements_;
+}
+
+std::string ElementChunker::take_chunk(const Project& project) {
+  std::string chunk(kElementsMagic);
+  Encoder out(chunk);
+  out(kVersion, project.workpiece, project.rawpiece, added_since(project.tools, tools_sent_),
+      added_since(project.technologies, technologies_sent_), added_since(project.machine_functions, machine_functions_sent_),
+      static_cast<std::uint64_t>(elements_));
+  chunk += body_;
+  body_.clear();
+  elements_ = 0;
+  return chunk;
+}
+
+void ElementUnchunker::chunk(std::string_view bytes, const ElementFn& each) {
+  Decoder dec(bytes);
+  expect_header(dec, bytes, kElementsMagic, "element chunk");
+  std::vector<MillingCuttingTool> tools;
+  std::vector<MillingTechnology> technologies;
+  std::vector<MillingMachineFunctions> machine_functions;
+  std::uint64_t count = 0;
+  dec(project_.workpiece, project_.rawpiece, tools, technologies, machine_functions, count);
+  auto append = [](auto& to, auto& from) { to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end())); };
+  append(project_.tools, tools);
+  append(project_.technologies, technologies);
+  append(project_.machine_functions, machine_functions);
+  for (std::uint64_t i = 0; i < count; ++i) {
+    Executable element;
+    dec(element);
+    project_.features.clear();
+    project_.operations.clear();
+    if (const auto* ws = std::get_if<MachiningWorkingstep>(&element)) {
+      if (ws->its_feature.index != 0 || ws->its_operation.index != 0)
+        dec.fail("streamed workingstep " + ws->its_id + " does not name its own feature and operation");
+      dec(project_.features.emplace_back(), project_.operations.emplace_back());
+      const bool known = std::visit(
+          [&](const MachiningOperation& op) {
+            return op.its_tool.index < project_.tools.size() && op.its_technology.index < project_.technologies.size() &&
+                   op.its_machine_functions.index < project_.machine_functions.size();
+          },
+          project_.operations.back());
+      if (!known) dec.fail("streamed workingstep " + ws->its_id + " names a tool, technology or machine functions that has not come");
+    }
+    each(project_, element);
+    ++elements_;
+  }
+  dec.expect_end();
 }
 
 }  // namespace ncbridge::stepnc_codec

@@ -9,6 +9,10 @@
 //                               are the first to name (about 1 MB each), the last one marked.
 // A reader decodes each chunk as it comes. An element is never split: one larger than a chunk
 // (a single workingstep of a huge toolpath) is a chunk of its own.
+// A CC1 job's model goes to the step writer while it is built (the shell is known at the end):
+//   seq 0     kind kModelStreamHead  the job's level, requested level and output name, no model;
+//   seq 1..n  kind kModelElements    element chunks (stepnc_codec::ElementChunker, ~1 MB each);
+//   seq n+1   kind kModelShell       the finished project's shell, marked last.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -24,6 +28,8 @@ namespace ncbridge::service {
 
 inline constexpr std::uint32_t kModelShell = 1;
 inline constexpr std::uint32_t kModelChunk = 2;
+inline constexpr std::uint32_t kModelStreamHead = 3;
+inline constexpr std::uint32_t kModelElements = 4;
 inline constexpr std::size_t kModelChunkBytes = std::size_t{1} << 20;
 
 // What the shell sample says besides the model.
@@ -36,6 +42,26 @@ struct ModelHeader {
 // Publishes `project` as the job's model stream (shell, then chunks; the last marked) on `topic`
 // (workingsteps or features).
 void publish_model(JobContext& context, bus::Topic topic, const ModelHeader& header, const stepnc::Project& project);
+
+// Publishes a model element by element as a builder finishes them (the streamed layout above).
+class ElementPublisher {
+ public:
+  ElementPublisher(JobContext& context, bus::Topic topic, ModelHeader header);
+  void element(const stepnc::Project& project, const stepnc::Executable& element);
+  // The rest of the elements, then `project`'s shell (the finished project, without elements).
+  void finish(const stepnc::Project& project);
+
+ private:
+  void publish(std::uint32_t kind, bool last, std::string model);
+  JobContext& context_;
+  bus::Topic topic_;
+  ModelHeader header_;
+  std::uint64_t seq_ = 0;
+  stepnc_codec::ElementChunker chunker_;
+};
+
+// Checks that a sample is part `kind` of this job's model (seq as the envelope's).
+wire::StepncModel read_model_part(const std::string& job_id, const bus::Envelope& sample, std::uint32_t kind);
 
 // Reads a job's model stream, sample by sample (in seq order), decoding each chunk as it comes.
 // Throws InputError for a sample that is not the expected part of this job's model.

@@ -8,6 +8,7 @@
 //    it), about `chunk_bytes` each; an element is never split, so a chunk holds at least one.
 // Joining the parts gives back a project equal to the one split (ProjectJoiner).
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,6 +38,38 @@ class ProjectJoiner {
  private:
   stepnc::Project project_;
   bool has_shell_ = false;
+};
+
+// Streamed CC1: workplan elements as a builder hands them on (cc1_builder::WorkplanSink), before
+// the project's shell is known. An element chunk holds the workpiece and rawpiece, the tools,
+// technologies and machine functions added since the previous chunk (the tables only grow), and
+// the elements, each machining workingstep with its own feature and operation (index 0).
+class ElementChunker {
+ public:
+  void element(const stepnc::Project& project, const stepnc::Executable& element);
+  std::size_t elements() const { return elements_; }
+  std::size_t bytes() const { return body_.size(); }
+  // The chunk of the elements since the last one; `project` is the builder's current project.
+  std::string take_chunk(const stepnc::Project& project);
+
+ private:
+  std::string body_;
+  std::size_t elements_ = 0;
+  std::size_t tools_sent_ = 0, technologies_sent_ = 0, machine_functions_sent_ = 0;
+};
+
+// Reads element chunks in order and hands each element on with a project that holds what it
+// names, as the builder did. Throws InputError ("<stepnc model>") on bytes that are not such a
+// chunk or an element naming what has not come.
+class ElementUnchunker {
+ public:
+  using ElementFn = std::function<void(const stepnc::Project&, const stepnc::Executable&)>;
+  void chunk(std::string_view bytes, const ElementFn& each);
+  std::size_t elements() const { return elements_; }
+
+ private:
+  stepnc::Project project_;
+  std::size_t elements_ = 0;
 };
 
 }  // namespace ncbridge::stepnc_codec
