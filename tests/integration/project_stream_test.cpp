@@ -151,6 +151,21 @@ TEST(ProjectStream, BadElementChunksAreInputErrors) {
   }
 }
 
+TEST(ProjectStream, AToolpathNamingATechnologyThatHasNotComeIsAnInputError) {
+  stepnc::Project project;
+  stepnc::RapidMovement rapid;
+  rapid.its_id = "RAPID_1";
+  stepnc::CutterLocationTrajectory trajectory;
+  trajectory.its_technology = stepnc::TechnologyRef{5};
+  rapid.its_toolpath = stepnc::ToolpathList{{trajectory}};
+  stepnc_codec::ElementChunker chunker;
+  chunker.element(project, stepnc::Executable{rapid});
+  const std::string chunk = chunker.take_chunk(project);
+  stepnc_codec::ElementUnchunker unchunker;
+  const auto ignore = [](const stepnc::Project&, const stepnc::Executable&) {};
+  EXPECT_THROW(unchunker.chunk(chunk, ignore), InputError);
+}
+
 TEST(ProjectStream, CorpusModelsJoinBackToTheSameFile) {
   std::vector<std::pair<std::string, std::string>> programs{{kShared + "/corpus/paper/", "face_mill.ngc"},
                                                             {kShared + "/corpus/paper/", "test_part.ngc"},

@@ -146,6 +146,17 @@ std::vector<T> added_since(const std::vector<T>& table, std::size_t& sent) {
   return added;
 }
 
+// A trajectory's own technology and machine functions must have come in this or an earlier chunk.
+void check_toolpath_refs(Decoder& dec, const Project& project, const std::string& element_id,
+                         const std::optional<ToolpathList>& toolpath) {
+  if (!toolpath) return;
+  for (const CutterLocationTrajectory& t : toolpath->its_list) {
+    const bool known = (!t.its_technology || t.its_technology->index < project.technologies.size()) &&
+                       (!t.its_machine_functions || t.its_machine_functions->index < project.machine_functions.size());
+    if (!known) dec.fail("streamed element " + element_id + " has a toolpath naming a technology or machine functions that has not come");
+  }
+}
+
 }  // namespace
 
 void ElementChunker::element(const Project& project, const Executable& element) {
@@ -196,6 +207,10 @@ void ElementUnchunker::chunk(std::string_view bytes, const ElementFn& each) {
           },
           project_.operations.back());
       if (!known) dec.fail("streamed workingstep " + ws->its_id + " names a tool, technology or machine functions that has not come");
+      std::visit([&](const MachiningOperation& op) { check_toolpath_refs(dec, project_, ws->its_id, op.its_toolpath); },
+                 project_.operations.back());
+    } else if (const auto* rapid = std::get_if<RapidMovement>(&element)) {
+      check_toolpath_refs(dec, project_, rapid->its_id, rapid->its_toolpath);
     }
     each(project_, element);
     ++elements_;
