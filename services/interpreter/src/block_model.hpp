@@ -109,6 +109,18 @@ struct Block {
   }
   std::string_view label() const { return name(statement.label_begin, statement.label_length); }
 
+  // A NamedParameter node reading the parameter `parameter_name` (written at 1-based `column`).
+  ExprRef add_named_parameter(std::string_view parameter_name, std::uint32_t column) {
+    ExprNode node;
+    node.op = ExprOp::NamedParameter;
+    node.column = column;
+    node.name_begin = static_cast<std::uint32_t>(names.size());
+    node.name_length = static_cast<std::uint32_t>(parameter_name.size());
+    names += parameter_name;
+    nodes.push_back(node);
+    return static_cast<ExprRef>(nodes.size() - 1);
+  }
+
   void clear() {
     line = 0;
     block_delete = percent = false;

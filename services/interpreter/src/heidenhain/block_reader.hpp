@@ -69,15 +69,9 @@ class Reader {
       std::size_t digits = p;
       while (p < s.size() && lowering::is_digit(s[p])) name.push_back(s[p++]);
       if (p == digits) return kNoExpr;
-      ExprNode node;
-      node.op = ExprOp::NamedParameter;
-      node.column = static_cast<std::uint32_t>(pos + 1);
-      node.name_begin = static_cast<std::uint32_t>(b.names.size());
-      node.name_length = static_cast<std::uint32_t>(name.size());
-      b.names += name;
-      b.nodes.push_back(node);
+      const auto column = static_cast<std::uint32_t>(pos + 1);
       pos = p;
-      return static_cast<ExprRef>(b.nodes.size() - 1);
+      return b.add_named_parameter(name, column);
     };
   }
 

@@ -71,15 +71,9 @@ class Reader {
       } else {
         return kNoExpr;
       }
-      ExprNode node;
-      node.op = ExprOp::NamedParameter;
-      node.column = static_cast<std::uint32_t>(pos + 1);
-      node.name_begin = static_cast<std::uint32_t>(b.names.size());
-      node.name_length = static_cast<std::uint32_t>(key.size());
-      b.names += key;
-      b.nodes.push_back(node);
+      const auto column = static_cast<std::uint32_t>(pos + 1);
       pos = p;
-      return static_cast<ExprRef>(b.nodes.size() - 1);
+      return b.add_named_parameter(key, column);
     };
   }
 
