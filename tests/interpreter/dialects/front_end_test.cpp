@@ -38,22 +38,45 @@ class Collect final : public ncbridge::canonical::Sink {
   }
 };
 
-Collect run(const std::string& text, Dialect dialect, const std::string& name = "test.prog") {
-  ncbridge::interpreter::Options options;
-  options.dialect = dialect;
+Collect run(const std::string& text, const ncbridge::interpreter::Options& options, const std::string& name = "test.prog") {
   Collect sink;
   ncbridge::interpreter::interpret_text(text, name, options, sink);
   return sink;
 }
 
-InputError error_of(const std::string& text, Dialect dialect) {
+Collect run(const std::string& text, Dialect dialect, const std::string& name = "test.prog") {
+  ncbridge::interpreter::Options options;
+  options.dialect = dialect;
+  return run(text, options, name);
+}
+
+// Options for `dialect` with T1 a 10 mm flat end mill (pocket cycles need its diameter).
+ncbridge::interpreter::Options with_mill(Dialect dialect) {
+  ncbridge::interpreter::Options options;
+  options.dialect = dialect;
+  ncbridge::setup::Tool mill;
+  mill.number = 1;
+  mill.type = ncbridge::setup::ToolType::FlatEndMill;
+  mill.diameter = 10.0;
+  mill.length = 50.0;
+  options.tools = ncbridge::setup::ToolList({mill});
+  return options;
+}
+
+InputError error_of(const std::string& text, const ncbridge::interpreter::Options& options) {
   try {
-    run(text, dialect);
+    run(text, options);
   } catch (const InputError& e) {
     return e;
   }
   ADD_FAILURE() << "no error for:\n" << text;
   return InputError({}, "");
+}
+
+InputError error_of(const std::string& text, Dialect dialect) {
+  ncbridge::interpreter::Options options;
+  options.dialect = dialect;
+  return error_of(text, options);
 }
 
 bool near(const std::array<double, 3>& p, double x, double y, double z) {
@@ -331,45 +354,19 @@ TEST(Siemens840D, UnsupportedCyclesAreReportedWhereTheyAre) {
   EXPECT_EQ(e.where().column, 5u);
   EXPECT_NE(e.message().find("POCKET3"), std::string::npos);
   EXPECT_NE(e.message().find("diameter"), std::string::npos) << e.message();
-  ncbridge::interpreter::Options options;
-  options.dialect = Dialect::Siemens840D;
-  ncbridge::setup::Tool mill;
-  mill.number = 1;
-  mill.type = ncbridge::setup::ToolType::FlatEndMill;
-  mill.diameter = 10.0;
-  mill.length = 50.0;
-  options.tools = ncbridge::setup::ToolList({mill});
-  Collect sink;
-  try {
-    ncbridge::interpreter::interpret_text(
-        "G71\nT1 D1 M6\nS1000 M3\nG0 X0 Y0 Z10\nN50 POCKET4(10,0,1,-5,20,0,0,2,0,0,100,100,0,11,5)\nM30\n",
-        "test.prog", options, sink);
-    ADD_FAILURE() << "no error for a helical infeed";
-  } catch (const InputError& h) {
-    EXPECT_EQ(h.where().line, 5u);
-    EXPECT_NE(h.message().find("POCKET4: helical"), std::string::npos) << h.message();
-  }
+  auto h = error_of("G71\nT1 D1 M6\nS1000 M3\nG0 X0 Y0 Z10\nN50 POCKET4(10,0,1,-5,20,0,0,2,0,0,100,100,0,11,5)\nM30\n",
+                    with_mill(Dialect::Siemens840D));
+  EXPECT_EQ(h.where().line, 5u);
+  EXPECT_NE(h.message().find("POCKET4: helical"), std::string::npos) << h.message();
 }
 
 TEST(Siemens840D, PocketWithMorePassesThanTheIterationLimitIsAnError) {
-  ncbridge::interpreter::Options options;
-  options.dialect = Dialect::Siemens840D;
+  auto options = with_mill(Dialect::Siemens840D);
   options.max_loop_iterations = 1000;
-  ncbridge::setup::Tool mill;
-  mill.number = 1;
-  mill.diameter = 10.0;
-  mill.length = 50.0;
-  options.tools = ncbridge::setup::ToolList({mill});
-  Collect sink;
-  try {
-    ncbridge::interpreter::interpret_text(
-        "G71\nT1 D1 M6\nS1000 M3\nG0 X0 Y0 Z10\nN50 POCKET4(10,0,1,-5,20,0,0,0.001,0,0,100,100,0,1,0.001)\nM30\n",
-        "test.prog", options, sink);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().line, 5u);
-    EXPECT_NE(e.message().find("iteration limit"), std::string::npos) << e.message();
-  }
+  auto e = error_of("G71\nT1 D1 M6\nS1000 M3\nG0 X0 Y0 Z10\nN50 POCKET4(10,0,1,-5,20,0,0,0.001,0,0,100,100,0,1,0.001)\nM30\n",
+                    options);
+  EXPECT_EQ(e.where().line, 5u);
+  EXPECT_NE(e.message().find("iteration limit"), std::string::npos) << e.message();
 }
 
 TEST(Siemens840D, SwivelAndPolarPoleErrorsAreLocated) {
