@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Runs every fuzz target in build-fuzz/bin for N seconds each on a copy of its seed corpus.
+# Runs every fuzz target in build-fuzz/bin for N seconds each on a copy of its seed corpus:
+# tests/fuzz/corpus/NAME/ plus the dialect's own test programs (tests/interpreter/dialects/NAME/,
+# without their .ngc RS274/NGC equivalents), so those need no second copy among the seeds.
 # Usage: scripts/run-fuzzers.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,6 +15,9 @@ for t in "${targets[@]}"; do
   seeds="tests/fuzz/corpus/${name#fuzz_}"
   work=$(mktemp -d)
   [[ -d "$seeds" ]] && cp -r "$seeds"/. "$work"/
+  for program in "tests/interpreter/dialects/${name#fuzz_}"/*; do
+    [[ -f "$program" && "$program" != *.ngc ]] && cp "$program" "$work"/
+  done
   echo "-- $name for ${seconds}s (seeds: $(ls "$work" | wc -l))"
   if ! "$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=0 \
         -artifact_prefix="build-fuzz/$name-" "$work" >"build-fuzz/$name.log" 2>&1; then

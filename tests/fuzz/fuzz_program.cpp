@@ -2,7 +2,7 @@
 // per target in CMakeLists.txt): the dialect's reader, its control flow, the lowering and the
 // RS274 executor. The interpreter must either finish or throw ncbridge::InputError with a
 // location; anything else (a crash, a sanitizer report, another exception, a hang past
-// libFuzzer's -timeout) is a bug. Seeds: tests/fuzz/corpus/<dialect>/.
+// libFuzzer's -timeout) is a bug. Seeds: tests/fuzz/corpus/<dialect>/ and tests/interpreter/dialects/<dialect>/.
 #include <cstddef>
 #include <cstdint>
 #include <string>
