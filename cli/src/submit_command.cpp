@@ -209,13 +209,23 @@ int run_submit(const SubmitArguments& args) {
   }
   const bool tty = isatty(STDERR_FILENO) != 0;
   int failed = 0;
+  // Each file goes to its temporary as its pieces come, and is renamed into place when whole.
+  std::map<std::string, std::unique_ptr<step_writer::AtomicFile>> writing;
+  const auto on_piece = [&](const std::string& job_id, const wire::Part21File& piece) {
+    std::unique_ptr<step_writer::AtomicFile>& file = writing[job_id];
+    if (!file) file = std::make_unique<step_writer::AtomicFile>(output_of.at(job_id));
+    file->write(piece.content);
+  };
   const auto on_over = [&](const std::string& job_id, service::JobOutcome outcome) {
     if (tty && single) std::fprintf(stderr, "\r\033[K");
+    const auto file = writing.find(job_id);
     if (outcome.error) {
       print_error(*outcome.error);
       ++failed;
+      if (file != writing.end()) writing.erase(file);  // removes the part written
     } else {
-      step_writer::write_file_atomically(output_of.at(job_id), outcome.file->content);
+      file->second->commit();
+      writing.erase(file);
       if (!single) std::fprintf(stderr, "%s: done, %s\n", job_id.c_str(), output_of.at(job_id).c_str());
     }
     programs.unregister(job_id, "");
@@ -226,7 +236,7 @@ int run_submit(const SubmitArguments& args) {
     if (s.state == wire::JobState::Progress) std::fprintf(stderr, " %3.0f%%", s.progress * 100);
     std::fprintf(stderr, "%s", tty ? "" : "\n");
   };
-  const std::set<std::string> late = watch.wait_all(timeout, on_over, on_status);
+  const std::set<std::string> late = watch.wait_all(timeout, on_piece, on_over, on_status);
   for (const std::string& id : late) std::fprintf(stderr, "ncbridge submit: job %s not done after %.0f s\n", id.c_str(), args.timeout_s);
   if (!single) std::fprintf(stderr, "%zu jobs: %zu done, %d failed, %zu not done\n", ids.size(), ids.size() - failed - late.size(), failed, late.size());
   if (!late.empty()) return 3;

@@ -1,5 +1,7 @@
 #include "ncbridge/wire/job.hpp"
 
+#include <utility>
+
 #include "parse_or_throw.hpp"
 #include "program.pb.h"
 
@@ -45,7 +47,7 @@ Job decode_job(std::string_view bytes) {
   Job job;
   job.job_id = m.job_id();
   job.file_name = m.file_name();
-  job.program_text = m.program_text();
+  job.program_text = std::move(*m.mutable_program_text());
   job.dialect = enum_in_range<Dialect>(m.dialect(), 6, what, "dialect");
   for (const auto& o : m.tools()) {
     setup::Tool t;

@@ -1,6 +1,7 @@
 #include "ncbridge/wire/part21.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "parse_or_throw.hpp"
 #include "part21.pb.h"
@@ -28,7 +29,7 @@ Part21File decode_part21(std::string_view bytes) {
   f.job_id = m.job_id();
   f.level = enum_in_range<Part21Level>(m.level(), 2, what, "level");
   f.file_name = m.file_name();
-  f.content = m.content();
+  f.content = std::move(*m.mutable_content());
   if (m.sha256().size() != f.sha256.size())
     malformed(what, "sha256 digest has " + std::to_string(m.sha256().size()) + " bytes, not 32");
   std::copy(m.sha256().begin(), m.sha256().end(), f.sha256.begin());

@@ -1,5 +1,7 @@
 #include "ncbridge/wire/workingsteps.hpp"
 
+#include <utility>
+
 #include "parse_or_throw.hpp"
 #include "workingsteps.pb.h"
 
@@ -32,7 +34,7 @@ StepncModel decode_stepnc_model(std::string_view bytes) {
   out.level = enum_in_range<ModelLevel>(m.level(), 2, what, "level");
   out.requested = enum_in_range<ModelLevel>(m.requested(), 2, what, "requested level");
   out.output_name = m.output_name();
-  out.model = m.model();
+  out.model = std::move(*m.mutable_model());
   return out;
 }
 

@@ -33,7 +33,7 @@ cat > "$WORK/cyclonedds.xml" <<XML
 <MaxMessageSize>65000B</MaxMessageSize><FragmentSize>62000B</FragmentSize></General>
 <Discovery><LeaseDuration>1s</LeaseDuration></Discovery>
 <SharedMemory><Enable>false</Enable></SharedMemory>
-<Internal><Watermarks><WhcHigh>8MB</WhcHigh></Watermarks></Internal>
+<Internal><Watermarks><WhcHigh>8MB</WhcHigh></Watermarks><HeartbeatInterval>10ms</HeartbeatInterval></Internal>
 </Domain></CycloneDDS>
 XML
 export CYCLONEDDS_URI="file://$WORK/cyclonedds.xml"

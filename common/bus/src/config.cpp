@@ -27,7 +27,7 @@ std::string loopback_config_xml(std::chrono::milliseconds lease) {
          "<MaxMessageSize>65000B</MaxMessageSize><FragmentSize>62000B</FragmentSize></General>"
          "<Discovery><LeaseDuration>" + std::to_string(lease.count()) + "ms</LeaseDuration></Discovery>"
          "<SharedMemory><Enable>false</Enable></SharedMemory>"
-         "<Internal><Watermarks><WhcHigh>8MB</WhcHigh></Watermarks>"
+         "<Internal><Watermarks><WhcHigh>8MB</WhcHigh></Watermarks><HeartbeatInterval>10ms</HeartbeatInterval>"
          "<SocketReceiveBufferSize min=\"default\" max=\"8MB\"/><SocketSendBufferSize min=\"default\" max=\"8MB\"/>"
          "</Internal></Domain></CycloneDDS>";
 }

@@ -27,6 +27,12 @@ JobOutcome JobWatch::wait(std::chrono::milliseconds timeout,
 std::set<std::string> JobWatch::wait_all(std::chrono::milliseconds timeout,
                                          const std::function<void(const std::string&, JobOutcome)>& on_over,
                                          const std::function<void(const wire::JobStatus&)>& on_status) {
+  return wait_all(timeout, PieceHandler{}, on_over, on_status);
+}
+
+std::set<std::string> JobWatch::wait_all(std::chrono::milliseconds timeout, const PieceHandler& on_piece,
+                                         const std::function<void(const std::string&, JobOutcome)>& on_over,
+                                         const std::function<void(const wire::JobStatus&)>& on_status) {
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + timeout;
   while (!pending_.empty()) {
@@ -47,7 +53,7 @@ std::set<std::string> JobWatch::wait_all(std::chrono::milliseconds timeout,
       if (piece.job_id != r.envelope.key || sha256(piece.content) != piece.sha256)
         throw InputError({"<part21 file>", 0, 0}, "piece " + std::to_string(piece.seq) + " of the file of job " +
                                                       r.envelope.key + " does not match its SHA-256 digest");
-      std::optional<wire::Part21File> file = add_piece(std::move(piece));
+      std::optional<wire::Part21File> file = add_piece(std::move(piece), on_piece);
       if (!file) continue;
       pending_.erase(r.envelope.key);
       incoming_.erase(r.envelope.key);
@@ -62,20 +68,24 @@ std::set<std::string> JobWatch::wait_all(std::chrono::milliseconds timeout,
   return pending_;
 }
 
-std::optional<wire::Part21File> JobWatch::add_piece(wire::Part21File piece) {
+std::optional<wire::Part21File> JobWatch::add_piece(wire::Part21File piece, const PieceHandler& on_piece) {
   Incoming& in = incoming_[piece.job_id];
-  const std::uint64_t next = in.file ? in.file->seq + 1 : 0;
-  if (piece.seq < next) return std::nullopt;  // a duplicate (a redo by another writer)
+  if (piece.seq < in.next) return std::nullopt;  // a duplicate (a redo by another writer)
   in.ahead.emplace(piece.seq, std::move(piece));
-  for (auto it = in.ahead.begin(); it != in.ahead.end() && it->first == (in.file ? in.file->seq + 1 : 0);
-       it = in.ahead.erase(it)) {
-    if (!in.file) {
-      in.file = std::move(it->second);
+  for (auto it = in.ahead.begin(); it != in.ahead.end() && it->first == in.next; it = in.ahead.erase(it)) {
+    ++in.next;
+    wire::Part21File& p = it->second;
+    if (on_piece) {
+      on_piece(p.job_id, p);
+      p.content.clear();
+      in.file = std::move(p);
+    } else if (!in.file) {
+      in.file = std::move(p);
     } else {
-      in.file->content += it->second.content;
-      in.file->seq = it->second.seq;
-      in.file->more = it->second.more;
-      in.file->sha256 = it->second.sha256;
+      in.file->content += p.content;
+      in.file->seq = p.seq;
+      in.file->more = p.more;
+      in.file->sha256 = p.sha256;
     }
     if (!in.file->more) return std::move(in.file);
   }

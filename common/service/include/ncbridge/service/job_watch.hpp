@@ -43,14 +43,25 @@ class JobWatch {
                                  const std::function<void(const std::string&, JobOutcome)>& on_over,
                                  const std::function<void(const wire::JobStatus&)>& on_status = {});
 
+  // The same, but a file is never joined in memory: each piece (digest checked) goes to
+  // `on_piece` as soon as the pieces before it have, so a client can write it out as it comes.
+  // The outcome's `file` is then the last piece with its content emptied.
+  using PieceHandler = std::function<void(const std::string& job_id, const wire::Part21File& piece)>;
+  std::set<std::string> wait_all(std::chrono::milliseconds timeout, const PieceHandler& on_piece,
+                                 const std::function<void(const std::string&, JobOutcome)>& on_over,
+                                 const std::function<void(const wire::JobStatus&)>& on_status = {});
+
  private:
-  // A file whose pieces are coming: the joined pieces so far, and those ahead of a gap.
+  // A file whose pieces are coming: the next piece expected, the joined pieces so far (when
+  // joining), and those ahead of a gap.
   struct Incoming {
+    std::uint64_t next = 0;
     std::optional<wire::Part21File> file;
     std::map<std::uint64_t, wire::Part21File> ahead;
   };
-  // Adds a piece; returns the whole file when this piece completed it.
-  std::optional<wire::Part21File> add_piece(wire::Part21File piece);
+  // Adds a piece; hands the pieces now in order to `on_piece` (or joins them when it is empty)
+  // and returns the file (joined, or the last piece emptied) when this piece completed it.
+  std::optional<wire::Part21File> add_piece(wire::Part21File piece, const PieceHandler& on_piece);
 
   std::set<std::string> pending_;
   std::map<std::string, Incoming> incoming_;
