@@ -28,7 +28,7 @@ export NCBRIDGE_DDS_DOMAIN=$(( 20 + $$ % 200 )) SOURCE_DATE_EPOCH=1700000000
 # large datagrams and writer buffers (Cyclone's defaults, as before they were added).
 if [[ ${DDS_TUNING:-1} == 1 ]]; then
   SIZES='<MaxMessageSize>65000B</MaxMessageSize><FragmentSize>62000B</FragmentSize>'
-  INTERNAL='<Internal><Watermarks><WhcHigh>8MB</WhcHigh></Watermarks><HeartbeatInterval>10ms</HeartbeatInterval></Internal>'
+  INTERNAL='<Internal><Watermarks><WhcHigh>8MB</WhcHigh></Watermarks><HeartbeatInterval>10ms</HeartbeatInterval><SocketReceiveBufferSize min="default" max="8MB"/><SocketSendBufferSize min="default" max="8MB"/></Internal>'
 else
   SIZES='' INTERNAL=''
 fi

@@ -18,6 +18,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "commands.hpp"
@@ -37,6 +38,8 @@ struct UpArguments {
   std::string live_tools;
   std::string live_stock;
   std::string log_level = "info";
+  // Passed on to every service (service_options.cpp): how long finished jobs stay on the bus.
+  std::optional<std::string> retain_jobs, retain_for, retain_mb;
 };
 
 struct Child {
@@ -124,6 +127,11 @@ int run_up(const UpArguments& args) {
       for (int i = 1; i <= args.workers; ++i) {
         const std::string name = std::string("ncbridge-") + stage;
         std::vector<std::string> argv{(bin / name).string(), "--log-level", args.log_level};
+        for (const auto& [flag, value] : {std::pair{"--retain-jobs", &args.retain_jobs},
+                                          std::pair{"--retain-for", &args.retain_for},
+                                          std::pair{"--retain-mb", &args.retain_mb}}) {
+          if (*value) argv.insert(argv.end(), {flag, **value});
+        }
         if (name == "ncbridge-step-writer" && !args.output_dir.empty()) {
           argv.insert(argv.end(), {"--output-dir", args.output_dir});
         }
@@ -170,6 +178,12 @@ void add_up_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--output-dir", args->output_dir, "The step writers also write each file here")->check(CLI::ExistingDirectory);
   cmd->add_option("--live-tools", args->live_tools, "Tool list for live-capture runs (controller-sim)")->check(CLI::ExistingFile);
   cmd->add_option("--live-stock", args->live_stock, "Stock for live-capture runs")->check(CLI::ExistingFile);
+  cmd->add_option("--retain-jobs", args->retain_jobs, "Each worker keeps its last N finished jobs on the bus (default 1000)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--retain-for", args->retain_for, "... and none older than this many seconds (default 3600)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--retain-mb", args->retain_mb, "... and step writers at most this many MB of results (default 1024)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--log-level", args->log_level, "Services' log level")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}));
   cmd->callback([args, &exit_code]() { exit_code = run_up(*args); });

@@ -2,12 +2,10 @@
 # Retention: finished jobs do not stay on the bus for ever. With --retain-jobs 2 every worker
 # keeps the statuses (and the step writer the results) of its last 2 jobs over: after 4 jobs a
 # late reader (`ncbridge status`) sees 2 jobs, the last two; with --retain-for 8 they are gone
-# once 8 s have passed.
+# once 8 s have passed. The bounds are given to `ncbridge up`, which hands them to every service.
 source "$(dirname "$0")/lib.sh"
 
-for stage in interpreter cc1-builder feature-recognizer step-writer; do
-  start_stage "$stage" "$stage" --retain-jobs 2 --retain-for 8
-done
+start up "$BIN/ncbridge" up --retain-jobs 2 --retain-for 8
 wait_workers 1
 for k in 1 2 3 4; do
   generate_program "$k" > "$WORK/r$k.ngc"
