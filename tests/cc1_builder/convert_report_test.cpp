@@ -83,8 +83,12 @@ TEST(ConvertReport, StreamedReportDescribesTheWholeWorkplan) {
       const auto& mop = stepnc::machining_operation(op);
       EXPECT_EQ(steps[i].at("tool"), p.tool(mop.its_tool).its_id);
       const auto& t = p.technology(mop.its_technology);
-      if (t.feedrate) EXPECT_DOUBLE_EQ(steps[i].at("feedrate_m_per_s").get<double>(), *t.feedrate);
-      if (t.spindle) EXPECT_DOUBLE_EQ(steps[i].at("spindle_rev_per_s").get<double>(), *t.spindle);
+      if (t.feedrate) {
+        EXPECT_DOUBLE_EQ(steps[i].at("feedrate_m_per_s").get<double>(), *t.feedrate);
+      }
+      if (t.spindle) {
+        EXPECT_DOUBLE_EQ(steps[i].at("spindle_rev_per_s").get<double>(), *t.spindle);
+      }
     } else {
       EXPECT_EQ(steps[i].at("kind"), "RAPID_MOVEMENT");
     }

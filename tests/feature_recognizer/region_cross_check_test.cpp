@@ -224,7 +224,9 @@ TEST(BoxIndex, CandidatesHoldEveryOverlappingBoxInOrder) {
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       const auto& b = boxes[i];
       const bool touches = b.xmin <= query.xmax && query.xmin <= b.xmax && b.ymin <= query.ymax && query.ymin <= b.ymax;
-      if (touches) EXPECT_TRUE(std::binary_search(found.begin(), found.end(), i)) << "box " << i << " query " << q;
+      if (touches) {
+        EXPECT_TRUE(std::binary_search(found.begin(), found.end(), i)) << "box " << i << " query " << q;
+      }
     }
   }
   // A point on a cell line finds the boxes on both sides of it.

@@ -134,8 +134,8 @@ TEST(DialectConstructs, EveryDialectHasSome) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Constructs, DialectConstruct, ::testing::ValuesIn(construct_cases()),
-                         [](const ::testing::TestParamInfo<ConstructCase>& info) {
-                           return info.param.dialect + "_" + info.param.program.stem().string();
+                         [](const ::testing::TestParamInfo<ConstructCase>& case_info) {
+                           return case_info.param.dialect + "_" + case_info.param.program.stem().string();
                          });
 
 // ---- the CAM corpus: every post of a part against its LinuxCNC post
