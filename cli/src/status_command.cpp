@@ -34,6 +34,7 @@ const char* state_name(wire::JobState s) {
     case wire::JobState::Progress: return "progress";
     case wire::JobState::Done: return "done";
     case wire::JobState::Error: return "ERROR";
+    case wire::JobState::Delivered: return "delivered";
   }
   return "?";
 }

@@ -3,12 +3,16 @@
 //   bus_inject truncated-job JOB       half of a valid Job's bytes on the programs topic
 //   bus_inject truncated-batch JOB     a valid job context, then a cut CanonicalBatch (canonical)
 //   bus_inject wrong-type JOB TOPIC    a JobStatus where TOPIC (workingsteps|features) wants a model
+// and, as a late reader, for results_test.sh:
+//   bus_inject results-of JOB          prints how many pieces of JOB's Part 21 file the bus still
+//                                      holds ("JOB: N pieces[, last]"), listening for 2 s
 #include <chrono>
 #include <cstdio>
 #include <string>
 #include <string_view>
 
 #include "ncbridge/bus/participant.hpp"
+#include "ncbridge/bus/reader.hpp"
 #include "ncbridge/bus/writer.hpp"
 #include "ncbridge/canonical/proto_codec.hpp"
 #include "ncbridge/service/canonical_stream.hpp"
@@ -32,12 +36,27 @@ wire::Job small_job(const std::string& id) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: bus_inject truncated-job|truncated-batch|wrong-type JOB [TOPIC]\n");
+    std::fprintf(stderr, "usage: bus_inject truncated-job|truncated-batch|wrong-type|results-of JOB [TOPIC]\n");
     return 2;
   }
   const std::string mode = argv[1];
   const std::string job_id = argv[2];
   bus::Participant participant(bus::config_from_environment());
+  if (mode == "results-of") {
+    bus::Reader part21(participant, bus::Topic::Part21);
+    std::size_t pieces = 0;
+    bool last = false;
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+    while (std::chrono::steady_clock::now() < end) {
+      for (const bus::Received& r : part21.take(std::chrono::milliseconds(100))) {
+        if (!r.has_data || r.envelope.key != job_id) continue;
+        ++pieces;
+        last = last || r.envelope.last;
+      }
+    }
+    std::printf("%s: %zu pieces%s\n", job_id.c_str(), pieces, last ? ", last" : "");
+    return 0;
+  }
   bus::Topic topic = bus::Topic::Programs;
   if (mode == "truncated-batch") topic = bus::Topic::Canonical;
   if (mode == "wrong-type") topic = argc > 3 && std::string_view(argv[3]) == "features" ? bus::Topic::Features

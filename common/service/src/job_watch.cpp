@@ -12,7 +12,8 @@ JobWatch::JobWatch(bus::Participant& participant, std::vector<std::string> job_i
     : pending_(job_ids.begin(), job_ids.end()),
       status_(participant, bus::Topic::Status),
       part21_(participant, bus::Topic::Part21),
-      wait_set_(participant) {
+      wait_set_(participant),
+      delivered_(participant, bus::Topic::Status) {
   wait_set_.attach(status_);
   wait_set_.attach(part21_);
 }
@@ -57,6 +58,7 @@ std::set<std::string> JobWatch::wait_all(std::chrono::milliseconds timeout, cons
       if (!file) continue;
       pending_.erase(r.envelope.key);
       incoming_.erase(r.envelope.key);
+      say_delivered(r.envelope.key);
       JobOutcome o;
       o.file = std::move(file);
       on_over(r.envelope.key, std::move(o));
@@ -66,6 +68,15 @@ std::set<std::string> JobWatch::wait_all(std::chrono::milliseconds timeout, cons
     wait_set_.wait(std::min(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now), std::chrono::milliseconds(200)));
   }
   return pending_;
+}
+
+void JobWatch::say_delivered(const std::string& job_id) {
+  wire::JobStatus s;
+  s.job_id = job_id;
+  s.stage = bus::kStageClient;
+  s.state = wire::JobState::Delivered;
+  s.progress = 1;
+  delivered_.write(job_id, bus::kStageClient, 0, static_cast<std::uint32_t>(s.state), true, wire::encode_status(s));
 }
 
 std::optional<wire::Part21File> JobWatch::add_piece(wire::Part21File piece, const PieceHandler& on_piece) {

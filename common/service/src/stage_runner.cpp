@@ -138,6 +138,7 @@ struct StageRunner::State {
       const bool over = s.state == wire::JobState::Error ||
                         (s.state == wire::JobState::Done && s.stage == bus::kStageStepWriter);
       if (over) job_over(r.envelope.key);
+      if (s.state == wire::JobState::Delivered) release_results(r.envelope.key);
     }
   }
 
@@ -160,10 +161,32 @@ struct StageRunner::State {
       }
       published.erase(p);
     }
+    const bool was_delivered = delivered.erase(job_id) != 0;
     if (with_status.erase(job_id) != 0 || !kept.outputs.empty()) {
       kept_bytes += kept.bytes;
       kept_jobs.push_back(std::move(kept));
+      if (was_delivered) release(kept_jobs.back());
     }
+  }
+
+  // A client has the job's whole file: the results kept for it leave the bus now (each reader
+  // that comes later would be sent every file kept); its statuses stay, under the retention policy.
+  void release_results(const std::string& job_id) {
+    if (published.contains(job_id)) {  // not over here yet (the client saw the last piece first)
+      delivered.insert(job_id);
+      return;
+    }
+    for (Kept& k : kept_jobs) {
+      if (k.job_id == job_id) release(k);
+    }
+  }
+
+  void release(Kept& k) {
+    if (k.outputs.empty()) return;
+    for (const auto& [topic, subkey] : k.outputs) unregister(writer_of(topic), k.job_id, subkey);
+    spdlog::debug("job {}: result delivered, {} bytes released", k.job_id, k.bytes);
+    k.outputs.clear();
+    kept_bytes -= std::exchange(k.bytes, 0);
   }
 
   bus::Writer& writer_of(bus::Topic topic) {
@@ -335,6 +358,7 @@ struct StageRunner::State {
   // Jobs this worker published output for, with the subkeys and bytes, until they are over.
   std::map<std::string, std::pair<Instances, std::uint64_t>, std::less<>> published;
   std::set<std::string, std::less<>> with_status;   // jobs this worker published a status of
+  std::set<std::string, std::less<>> delivered;  // jobs a client has whole before they were over here
   std::deque<Kept> kept_jobs;
   std::uint64_t kept_bytes = 0;
   std::uint64_t status_seq = 0;

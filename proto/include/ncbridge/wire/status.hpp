@@ -8,7 +8,9 @@
 
 namespace ncbridge::wire {
 
-enum class JobState : std::uint8_t { Queued, Running, Progress, Done, Error };
+// Delivered: a client has the job's whole file (stage "client"); the step writer then drops its
+// copy from the bus, so readers that come later are not sent every file kept.
+enum class JobState : std::uint8_t { Queued, Running, Progress, Done, Error, Delivered };
 
 struct JobStatus {
   std::string job_id;

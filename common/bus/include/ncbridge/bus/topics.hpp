@@ -42,5 +42,6 @@ inline constexpr std::string_view kStageInterpreter = "interpreter";
 inline constexpr std::string_view kStageCc1Builder = "cc1_builder";
 inline constexpr std::string_view kStageFeatureRecognizer = "feature_recognizer";
 inline constexpr std::string_view kStageStepWriter = "step_writer";
+inline constexpr std::string_view kStageClient = "client";  // a JobWatch: "delivered"
 
 }  // namespace ncbridge::bus

@@ -2,7 +2,9 @@
 // A client's view of its jobs (ncbridge submit --wait, controller-sim -o): their statuses as
 // the stages report them, and each one's Part 21 file when the step_writer publishes it. Make
 // the JobWatch before publishing the jobs; nothing is missed (status and part21 are durable too).
-// One watch serves any number of jobs on one participant (a bulk submit).
+// One watch serves any number of jobs on one participant (a bulk submit). When a file is whole
+// the watch says so on the status topic (Delivered, stage "client"), and the step writer lets go
+// of its copy.
 #include <chrono>
 #include <functional>
 #include <map>
@@ -14,6 +16,7 @@
 #include "ncbridge/bus/participant.hpp"
 #include "ncbridge/bus/reader.hpp"
 #include "ncbridge/bus/wait_set.hpp"
+#include "ncbridge/bus/writer.hpp"
 #include "ncbridge/wire/part21.hpp"
 #include "ncbridge/wire/status.hpp"
 
@@ -62,12 +65,14 @@ class JobWatch {
   // Adds a piece; hands the pieces now in order to `on_piece` (or joins them when it is empty)
   // and returns the file (joined, or the last piece emptied) when this piece completed it.
   std::optional<wire::Part21File> add_piece(wire::Part21File piece, const PieceHandler& on_piece);
+  void say_delivered(const std::string& job_id);
 
   std::set<std::string> pending_;
   std::map<std::string, Incoming> incoming_;
   bus::Reader status_;
   bus::Reader part21_;
   bus::WaitSet wait_set_;
+  bus::Writer delivered_;  // on the status topic
 };
 
 }  // namespace ncbridge::service
