@@ -25,18 +25,11 @@ trap cleanup EXIT
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-# A DDS domain of this test alone, and Cyclone on loopback with multicast and a 1 s lease.
+# A DDS domain of this test alone, and the loopback configuration users get
+# (deploy/cyclonedds/loopback.xml: multicast on lo, 1 s lease), so the tests run what is shipped.
+: "${SOURCE_DIR:?}"
 export NCBRIDGE_DDS_DOMAIN=$(( 20 + $$ % 200 ))
-cat > "$WORK/cyclonedds.xml" <<XML
-<CycloneDDS xmlns="https://cdds.io/config"><Domain id="any">
-<General><Interfaces><NetworkInterface name="lo" multicast="true"/></Interfaces>
-<MaxMessageSize>65000B</MaxMessageSize><FragmentSize>62000B</FragmentSize></General>
-<Discovery><LeaseDuration>1s</LeaseDuration></Discovery>
-<SharedMemory><Enable>false</Enable></SharedMemory>
-<Internal><Watermarks><WhcHigh>8MB</WhcHigh></Watermarks><HeartbeatInterval>10ms</HeartbeatInterval></Internal>
-</Domain></CycloneDDS>
-XML
-export CYCLONEDDS_URI="file://$WORK/cyclonedds.xml"
+export CYCLONEDDS_URI="file://$SOURCE_DIR/deploy/cyclonedds/loopback.xml"
 export SOURCE_DATE_EPOCH=1700000000
 export NCBRIDGE_TEST_TIMEOUT=${NCBRIDGE_TEST_TIMEOUT:-300}
 
