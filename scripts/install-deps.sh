@@ -13,12 +13,17 @@ packages=(
   libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   libssl-dev  # SHA-256 of written files (services), openssl for the DDS Security test PKI
+  # Open CASCADE: STEP B-rep part files (part_reader only)
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
 )
 if [[ "${1:-}" == "--tests" ]]; then
   # clang + its runtime for libFuzzer targets and sanitizer builds; iproute2 for multi-host tests.
   packages+=(clang libclang-rt-14-dev iproute2 python3)
   # podman + runc: the container test of the services (installs in ~20 s; the test takes ~20 s).
   packages+=(openssl podman runc procps)
+  # The reference tools the tests compare with: LinuxCNC's standalone interpreter `rs274` and its
+  # simulated controller (linuxcnc-uspace), and a headless browser for the HTML pages.
+  packages+=(linuxcnc-uspace chromium)
 fi
 
 missing=()

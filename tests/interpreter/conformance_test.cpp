@@ -76,7 +76,10 @@ bool rs274_reported_error(const std::string& err) {
 
 TEST(Rs274Conformance, SampleProgramsAgreeWithRs274) {
   const fs::path rs274 = ncbridge::testing::find_on_path("rs274");
-  if (rs274.empty()) GTEST_SKIP() << "SKIPPED: rs274 not installed (Debian package linuxcnc-uspace)";
+  if (rs274.empty()) {
+    if (ncbridge::testing::in_ci()) FAIL() << "rs274 not installed under CI=true (scripts/install-deps.sh --tests installs linuxcnc-uspace)";
+    GTEST_SKIP() << "SKIPPED: rs274 not installed (Debian package linuxcnc-uspace)";
+  }
   const fs::path timeout = ncbridge::testing::find_on_path("timeout");
   ASSERT_FALSE(timeout.empty()) << "coreutils `timeout` not found";
 

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <string_view>
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
@@ -102,6 +103,11 @@ std::filesystem::path find_on_path(const std::string& name) {
     rest.remove_prefix(colon + 1);
   }
   return {};
+}
+
+bool in_ci() {
+  const char* ci = std::getenv("CI");
+  return ci != nullptr && std::string_view(ci) == "true";
 }
 
 }  // namespace ncbridge::testing

@@ -25,4 +25,8 @@ ProgramRun run_program(const std::vector<std::string>& argv, const RunOptions& o
 // The full path of `name` found on PATH, or empty.
 std::filesystem::path find_on_path(const std::string& name);
 
+// True when the tests run in CI (CI=true): a reference tool that is missing there is a failure
+// (scripts/install-deps.sh --tests installs every one), never a skip.
+bool in_ci();
+
 }  // namespace ncbridge::testing
