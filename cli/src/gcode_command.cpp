@@ -38,6 +38,7 @@ struct GcodeArguments {
   std::string comments = "program";
   std::optional<int> decimals;
   std::optional<bool> block_numbers;
+  bool block_numbers_flag = false;
   std::optional<std::uint32_t> program_number;
   std::string program_name;
 };
@@ -155,12 +156,15 @@ void add_gcode_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"none", "program", "source"}));
   cmd->add_option("--decimals", args->decimals, "Digits after the point for lengths in mm (one more in inches; default 4)")
       ->check(CLI::Range(0, 6));
-  cmd->add_flag("--block-numbers,!--no-block-numbers", args->block_numbers,
-                "Number the blocks N10, N20, ... (default: as the dialect's programs usually are)");
+  CLI::Option* numbers = cmd->add_flag("--block-numbers,!--no-block-numbers", args->block_numbers_flag,
+                                       "Number the blocks N10, N20, ... (default: as the dialect's programs usually are)");
   cmd->add_option("--program-number", args->program_number, "Fanuc/Mach3 O number of the program (default 1000)")
       ->check(CLI::Range(1, 9999));
   cmd->add_option("--program-name", args->program_name, "Program name (default: the output file's name)");
-  cmd->callback([args, &exit_code]() { exit_code = run_gcode(*args); });
+  cmd->callback([args, numbers, &exit_code]() {
+    if (numbers->count() > 0) args->block_numbers = args->block_numbers_flag;
+    exit_code = run_gcode(*args);
+  });
 }
 
 }  // namespace ncbridge::cli

@@ -22,7 +22,8 @@ using ncbridge::testing::CorpusProgram;
 namespace {
 
 const gcode_writer::Dialect kDialects[] = {gcode_writer::Dialect::Rs274Ngc, gcode_writer::Dialect::Fanuc,
-                                           gcode_writer::Dialect::Mach3};
+                                           gcode_writer::Dialect::Mach3, gcode_writer::Dialect::Siemens840D,
+                                           gcode_writer::Dialect::Heidenhain};
 
 interpreter::Dialect reader_of(gcode_writer::Dialect d) {
   switch (d) {

@@ -25,12 +25,12 @@ enum Need : unsigned {
   kFrame = 1u << 1,      // units, work offsets and XY rotation, G92 offset, tool length offset
   kFeed = 1u << 2,       // feed rate, feed mode and reference, overrides
   kPlane = 1u << 3,      // the plane (arcs, cycles)
-  kPath = 1u << 4,       // path control mode and tolerances
+  kPath = 1u << 4,       // path control mode and tolerances (feed motions)
   kToolSelect = 1u << 5, // the selected tool (T)
   kUnits = 1u << 6,      // only the units (actions with lengths)
 };
-constexpr unsigned kMotion = kActuators | kFrame | kPath | kToolSelect;
-constexpr unsigned kFeedMotion = kMotion | kFeed;
+constexpr unsigned kMotion = kActuators | kFrame | kToolSelect;
+constexpr unsigned kFeedMotion = kMotion | kFeed | kPath;
 
 // One hole of a canned cycle: the calls the cycle made for it, all with the same cycle id.
 struct Hole {

@@ -74,6 +74,7 @@ struct ProgramWriter::Impl {
   std::optional<Hole> hole;
   std::uint32_t announced_file = ~0u, announced_line = 0;
   bool in_repeat = false;
+  std::vector<std::pair<std::string, bool>> early_comments;  // before the first action (text, message)
 
   [[noreturn]] void refuse(const std::string& message) const {
     throw InputError({where.file, where.line, 0}, message);
@@ -88,6 +89,10 @@ struct ProgramWriter::Impl {
     if (started) return;
     started = true;
     dialect->begin_program(desired);
+    for (const auto& [text, message] : early_comments) {
+      if (message) dialect->message(text); else dialect->comment(text);
+    }
+    early_comments.clear();
   }
 
   // Comments::Source: a comment naming the source line before the blocks it made.
@@ -129,7 +134,9 @@ struct ProgramWriter::Impl {
     announce(h.calls.front().source);
     if (pallet_pending) refuse_pallet();
     if (ended) refuse("motion after the program end (M2/M30)");
-    sync(kFeedMotion | kPlane);
+    // the path mode is the cycle's own business (the executor runs it in exact path mode, and an
+    // L-repeated block switches it before its first hole and back after its last)
+    sync((kFeedMotion & ~kPath) | kPlane);
     if (dialect->cycle(h, desired)) {
       for (const Call& c : h.calls) desired.apply(c.data);
       return;
@@ -185,7 +192,11 @@ struct ProgramWriter::Impl {
       return;
     } else if constexpr (std::is_same_v<T, Comment> || std::is_same_v<T, Message>) {
       if (options.comments == Comments::None || reader_made(d.text)) return;
-      start();
+      if (!started) {
+        // the program's start waits for its first action (its units), the comments before it with it
+        early_comments.emplace_back(d.text, std::is_same_v<T, Message>);
+        return;
+      }
       if constexpr (std::is_same_v<T, Comment>) dialect->comment(d.text); else dialect->message(d.text);
       return;
     } else if constexpr (std::is_same_v<T, OnReset> || std::is_same_v<T, StartChange>) {

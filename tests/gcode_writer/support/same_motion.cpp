@@ -172,7 +172,7 @@ std::vector<CanonLine> one_turn_arcs(const std::vector<CanonLine>& lines) {
 std::vector<Action> actions_of(std::string_view listing) {
   std::vector<Action> actions;
   std::map<std::string, Value> state = initial_state();
-  std::optional<std::vector<double>> position;
+  std::optional<std::vector<double>> position = std::vector<double>(6, 0.0);  // readers start at 0
   for (const CanonLine& line : one_turn_arcs(parse_canon_listing(listing))) {
     const std::string& name = line.name;
     if (name == "COMMENT" || name == "MESSAGE" || name == "ON_RESET" || name == "FINISH") continue;
@@ -201,8 +201,25 @@ std::vector<Action> actions_of(std::string_view listing) {
         v.words = line.args;
       }
       if (!same_value(state[key->second], v, 1e-9)) {
-        if (key->second == "units" || key->second == "g5x" || key->second == "g92" || key->second == "tool_length") {
-          position.reset();  // the program position moves when the frame does
+        // the program position moves when the frame does (the machine stays where it is)
+        if (position && key->second == "units") {
+          const double f = v.words[0] == "CANON_UNITS_INCHES" ? 1 / 25.4 : 25.4;
+          if (v.words[0] != state["units"].words[0]) {
+            for (std::size_t i = 0; i < position->size(); ++i) {
+              if (i < 3) (*position)[i] *= f;
+            }
+          }
+        } else if (position && (key->second == "tool_length" || key->second == "g5x" || key->second == "g92")) {
+          // (SET_G5X_OFFSET names the active system's offset, after its index)
+          const std::size_t first = key->second == "g5x" ? 1 : 0;
+          const Value& old = state[key->second];
+          for (std::size_t i = 0; i < 6 && i < position->size(); ++i) {
+            const std::size_t j = first + i;
+            if (j >= old.mm.size() || j >= v.mm.size()) break;
+            (*position)[i] += (old.mm[j] - v.mm[j]) / (i < 3 ? k : 1.0);
+          }
+        } else if (key->second == "units" || key->second == "g5x" || key->second == "g92" || key->second == "tool_length") {
+          position.reset();
         }
         state[key->second] = v;
       }
@@ -213,7 +230,8 @@ std::vector<Action> actions_of(std::string_view listing) {
       std::vector<double> end;
       for (const auto& a : line.args) end.push_back(std::atof(a.c_str()));
       bool still = position && position->size() == end.size();
-      for (std::size_t i = 0; still && i < end.size(); ++i) still = std::fabs((*position)[i] - end[i]) < 1e-9;
+      // (within half the listing's last digit: a shorter move prints as no move)
+      for (std::size_t i = 0; still && i < end.size(); ++i) still = std::fabs((*position)[i] - end[i]) < 5e-5;
       position = end;
       if (still) continue;
     } else if (name == "ARC_FEED") {
@@ -224,8 +242,10 @@ std::vector<Action> actions_of(std::string_view listing) {
     if (move) {
       keys = kFrame;
       keys.insert(keys.end(), kActuators.begin(), kActuators.end());
-      keys.push_back("control");
-      if (state["control"].words[0] == "CANON_CONTINUOUS") keys.push_back("naive");
+      if (name != "STRAIGHT_TRAVERSE") {
+        keys.push_back("control");
+        if (state["control"].words[0] == "CANON_CONTINUOUS") keys.push_back("naive");
+      }
       keys.push_back("tool");
       if (name != "STRAIGHT_TRAVERSE") keys.insert(keys.end(), kFeed.begin(), kFeed.end());
       if (name == "ARC_FEED") keys.push_back("plane");

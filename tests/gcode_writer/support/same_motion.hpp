@@ -5,8 +5,9 @@
 //  - state calls (units, offsets, tool length, feed, speed, spindle, coolant, path mode, plane,
 //    overrides, tool selection) are not compared as calls but as the state they set: each
 //    action is compared together with the state it depends on (moves: frame, spindle and
-//    coolant, path mode, selected tool; feed moves and arcs also feed and overrides, arcs the
-//    plane; dwells and stops the spindle and coolant). A call that sets what is already set
+//    coolant, selected tool; feed moves and arcs also feed, overrides and path mode (a rapid is
+//    positioning: how a control blends it is its own business), arcs the plane; dwells and
+//    stops the spindle and coolant). A call that sets what is already set
 //    changes nothing; lengths of offsets and feeds compare in mm (a SET_FEED_RATE is in the
 //    units of its time);
 //  - a move that does not move is dropped (posts leave out blocks that repeat the position);
