@@ -16,10 +16,12 @@
 #include "commands.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/gcode_writer/program_writer.hpp"
+#include "ncbridge/gcode_writer/stepnc_interpreter.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/setup/tool_list.hpp"
 #include "ncbridge/step_writer/atomic_file.hpp"
+#include "ncbridge/step_writer/stepnc_file.hpp"
 
 namespace ncbridge::cli {
 
@@ -107,7 +109,18 @@ int run_gcode(const GcodeArguments& args) {
                                                  : gcode_writer::Comments::Program;
 
   if (is_part21(args.input)) {
-    throw InputError({args.input, 0, 0}, "STEP-NC input is not read by `ncbridge gcode` yet");
+    // a CC1 file: the STEP-NC interpreter's calls; the program runs with the file's tools
+    // unless a tool list is given
+    const auto read = step_writer::read_stepnc_file(args.input);
+    for (const auto& w : read.warnings) std::fprintf(stderr, "%s\n", w.to_string().c_str());
+    if (options.tools.empty()) options.tools = gcode_writer::stepnc_tools(read.project);
+    gcode_writer::StepncOptions stepnc;
+    stepnc.name_workingsteps = options.comments == gcode_writer::Comments::Source;
+    step_writer::AtomicFile file(args.output);
+    gcode_writer::ProgramWriter writer(options, [&](std::string_view piece) { file.write(piece); });
+    gcode_writer::interpret_stepnc(read.project, args.input, stepnc, writer);
+    file.commit();
+    return 0;
   }
 
   interpreter::Options reading;

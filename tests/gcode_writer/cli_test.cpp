@@ -16,6 +16,7 @@ using ncbridge::testing::run_program;
 namespace {
 
 const fs::path kSource = NCBRIDGE_SOURCE_DIR;
+const fs::path kShared = NCBRIDGE_SHARED_DIR;
 
 class GcodeCommand : public ::testing::Test {
  protected:
@@ -73,6 +74,36 @@ TEST_F(GcodeCommand, ABadProgramIsALocatedErrorAndWritesNothing) {
                                 "mach3", "-o", out.string()});
   EXPECT_NE(run.exit_code, 0);
   EXPECT_NE(run.err.find("bad.ngc:3"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(GcodeCommand, PostsACc1FileItConvertedInEveryDialect) {
+  const fs::path plate = kSource / "examples/plate";
+  const fs::path cc1 = dir_ / "plate_cc1.stp";
+  const auto convert = run_program({NCBRIDGE_EXECUTABLE, "convert", (plate / "plate.ngc").string(), "--tools",
+                                    (plate / "tools.json").string(), "--stock", (plate / "stock.json").string(),
+                                    "--level", "cc1", "-o", cc1.string()});
+  ASSERT_EQ(convert.exit_code, 0) << convert.err;
+  for (const char* to : {"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain"}) {
+    const fs::path out = dir_ / (std::string("plate_") + to);
+    const auto run = run_program({NCBRIDGE_EXECUTABLE, "gcode", cc1.string(), "--to", to, "-o", out.string()});
+    EXPECT_EQ(run.exit_code, 0) << to << ": " << run.err;
+    EXPECT_GT(fs::file_size(out), 500u) << to;
+  }
+}
+
+TEST_F(GcodeCommand, ABrokenCc1FileIsALocatedErrorAndWritesNothing) {
+  std::string text = read(fs::path(NCBRIDGE_SHARED_DIR) / "corpus/stepnc/nist_ex1E.stp");
+  const std::string toolpath = "#303= TRIMMED_CURVE('path segment1', #306,";
+  const auto at = text.find(toolpath);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, toolpath.size(), "#303= TRIMMED_CURVE('path segment1', #99999,");
+  const fs::path broken = dir_ / "broken.stp";
+  std::ofstream(broken, std::ios::binary) << text;
+  const fs::path out = dir_ / "broken.ngc";
+  const auto run = run_program({NCBRIDGE_EXECUTABLE, "gcode", broken.string(), "--to", "rs274ngc", "-o", out.string()});
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.err.find("#99999"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(out));
 }
 
