@@ -85,10 +85,7 @@ void FanucWriter::sync_spindle_mode(const MachineState& d) {
 
 void FanucWriter::sync_control(const MachineState& d) {
   if (d.control == MotionControlMode::ExactStop) cannot("exact stop mode (G61.1)");
-  if (d.control == MotionControlMode::Continuous && (d.tolerance != 0 || d.naive_tolerance != 0)) {
-    cannot("a path blending tolerance (G64 P" + format_number(d.tolerance, style_) + ")");
-  }
-  WordAddressWriter::sync_control(d);
+  sync_control_without_tolerance(d);
 }
 
 void FanucWriter::sync_overrides(const MachineState& d) {

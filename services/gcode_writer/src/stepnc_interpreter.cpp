@@ -395,6 +395,7 @@ class Interpreter {
     } else if constexpr (std::is_same_v<Op, sn::MultistepDrilling>) {
       q = op.depth_of_step > 0 ? op.depth_of_step : op.first_depth;
       if (q <= 0) fail("MULTISTEP_DRILLING without a depth of step");
+      if (!(depth / q <= 1e5)) fail("MULTISTEP_DRILLING of more than 100000 steps");
       const double rapid_delta = 0.254;  // the executor's G73 retract, mm
       g = op.retract_distance > 0 && op.retract_distance < q - 1e-6 && std::fabs(op.retract_distance - rapid_delta) < 0.05 ? 730 : 830;
     } else if constexpr (std::is_same_v<Op, sn::Tapping>) {

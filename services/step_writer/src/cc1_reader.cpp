@@ -228,7 +228,9 @@ class Cc1Reader {
     }
     constexpr double kChordTolerance = 0.001;  // mm
     const double step = 2 * std::acos(std::max(-1.0, 1 - kChordTolerance / radius));
-    const auto pieces = static_cast<std::size_t>(std::max(1.0, std::ceil(std::fabs(sweep) / step)));
+    const double count = std::max(1.0, std::ceil(std::fabs(sweep) / step));
+    if (!(count <= 1e6)) fail(i, "a helix of more than a million chords of 0.001 mm");
+    const auto pieces = static_cast<std::size_t>(count);
     sn::Polyline l;
     l.points.push_back(*t1.point);
     for (std::size_t k = 1; k < pieces; ++k) {
