@@ -117,7 +117,10 @@ int run_gcode(const GcodeArguments& args) {
     for (const auto& w : read.warnings) std::fprintf(stderr, "%s\n", w.to_string().c_str());
     if (options.tools.empty()) options.tools = gcode_writer::stepnc_tools(read.project);
     gcode_writer::StepncOptions stepnc;
-    stepnc.name_workingsteps = options.comments == gcode_writer::Comments::Source;
+    if (options.comments == gcode_writer::Comments::Source) {
+      stepnc.name_workingsteps = true;  // a workingstep's name says where its blocks come from
+      options.comments = gcode_writer::Comments::Program;
+    }
     step_writer::AtomicFile file(args.output);
     gcode_writer::ProgramWriter writer(options, [&](std::string_view piece) { file.write(piece); });
     gcode_writer::interpret_stepnc(read.project, args.input, stepnc, writer);
