@@ -87,7 +87,10 @@ class WordAddressWriter : public DialectWriter {
   canonical::Pose rounded_pose(const canonical::Pose& pose) const;
 
   [[noreturn]] void cannot(const std::string& construct, const std::string& why = {}) const { refuse(construct, why); }
-  bool is_cycle_motion(int motion) const { return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890); }
+  // (761 and 871: Fanuc's G76 and G87, which its front-end spells as moves)
+  bool is_cycle_motion(int motion) const {
+    return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890) || motion == 761 || motion == 871;
+  }
   void leave_cycles();
   void axis_words(std::string& s, const canonical::Pose& end, bool always_one);
   void motion_word(std::string& s, int motion);  // G0/G1/G2/G3 when the reader is not in it
