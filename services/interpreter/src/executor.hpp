@@ -50,6 +50,14 @@ class Executor final : public ComputedParameters {
   const ModalState& state() const { return s_; }
   std::optional<double> computed(std::string_view name) const override;
 
+  // The end-radius tolerance of IJK arcs, in mm and in inches (LinuxCNC's INI settings
+  // [RS274NGC]CENTER_ARC_RADIUS_TOLERANCE_MM/_INCH; a dialect's table may set its controller's).
+  struct ArcTolerance {
+    double mm = 2 * 0.01 * 1.4142135623730951;     // LinuxCNC's defaults: 2 * 0.01 * sqrt(2) mm
+    double inch = 2 * 0.001 * 1.4142135623730951;  // and 2 * 0.001 * sqrt(2) in
+  };
+  void set_arc_tolerance(const ArcTolerance& tolerance) { arc_tolerance_ = tolerance; }
+
  private:
   [[noreturn]] void fail(std::uint32_t column, const std::string& message) const;
 
@@ -126,6 +134,7 @@ class Executor final : public ComputedParameters {
   canonical::Pose to_units(const canonical::Pose& mm) const;
 
   const Options& options_;
+  ArcTolerance arc_tolerance_;
   Parameters& params_;
   canonical::Sink& sink_;
   ModalState s_;

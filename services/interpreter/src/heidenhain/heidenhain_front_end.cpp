@@ -42,7 +42,7 @@ struct CornerPlan {
 class Runner {
  public:
   Runner(const Options& options, canonical::Sink& sink)
-      : options_(options), table_(lowering::load_dialect_table("heidenhain")), m_(options, sink) {}
+      : options_(options), table_(lowering::load_dialect_table("heidenhain")), m_(options, sink, table_) {}
   void run(ProgramText program);
 
  private:

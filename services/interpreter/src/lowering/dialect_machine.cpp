@@ -6,9 +6,13 @@
 
 namespace ncbridge::interpreter::lowering {
 
-DialectMachine::DialectMachine(const Options& options, canonical::Sink& sink)
+DialectMachine::DialectMachine(const Options& options, canonical::Sink& sink, const DialectTable& table)
     : options_(options), sink_(sink), executor_(options, params_, sink), file_name_(&no_file_) {
   params_.set_computed(&executor_);
+  Executor::ArcTolerance arcs;
+  arcs.mm = table.setting("center_arc_radius_tolerance_mm", arcs.mm);
+  arcs.inch = table.setting("center_arc_radius_tolerance_inch", arcs.inch);
+  executor_.set_arc_tolerance(arcs);
 }
 
 void DialectMachine::start() {

@@ -10,6 +10,7 @@
 #include "block_command.hpp"
 #include "block_model.hpp"
 #include "executor.hpp"
+#include "lowering/dialect_table.hpp"
 #include "lowering/frame.hpp"
 #include "lowering/neutral_block.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
@@ -19,7 +20,9 @@ namespace ncbridge::interpreter::lowering {
 
 class DialectMachine {
  public:
-  DialectMachine(const Options& options, canonical::Sink& sink);
+  // `table`'s settings center_arc_radius_tolerance_mm/_inch, where given, replace LinuxCNC's
+  // default arc end-radius tolerance (Executor::ArcTolerance).
+  DialectMachine(const Options& options, canonical::Sink& sink, const DialectTable& table);
   DialectMachine(const DialectMachine&) = delete;
   DialectMachine& operator=(const DialectMachine&) = delete;
 

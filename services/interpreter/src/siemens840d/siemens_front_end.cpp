@@ -38,7 +38,7 @@ struct File {
 class Runner {
  public:
   Runner(const Options& options, canonical::Sink& sink)
-      : options_(options), table_(lowering::load_dialect_table("siemens840d")), m_(options, sink), reader_(variables_) {}
+      : options_(options), table_(lowering::load_dialect_table("siemens840d")), m_(options, sink, table_), reader_(variables_) {}
   void run(ProgramText program);
 
  private:
