@@ -107,11 +107,12 @@ std::string unknown_options(const CLI::App& app, const CLI::App* command, int ar
 std::optional<std::string> nearest(std::string_view word, const std::vector<std::string>& candidates) {
   std::optional<std::string> best;
   if (word.size() <= 2) return best;  // "-x": every short option is as near
-  std::size_t best_distance = std::max<std::size_t>(1, word.size() / 3) + 1;
+  const std::size_t near_enough = std::max<std::size_t>(1, word.size() / 3);
+  std::size_t best_distance = 0;
   for (const std::string& c : candidates) {
-    if (word.size() >= 3 && c.starts_with(word)) return c;
     const std::size_t d = edit_distance(word, c);
-    if (d < best_distance) {
+    const bool prefix = word.size() >= 3 && c.starts_with(word);  // "conv" for "convert"
+    if ((d <= near_enough || prefix) && (!best || d < best_distance)) {
       best_distance = d;
       best = c;
     }
