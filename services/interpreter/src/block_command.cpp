@@ -59,6 +59,7 @@ void BlockCommand::reset() {
   g.fill(-1);
   m.fill(-1);
   mist_on = flood_on = false;
+  has_polar_radius = has_polar_angle = false;
   comment = {};
   comment_is_message = false;
 }
@@ -101,6 +102,14 @@ void assemble_command(const Block& block, const double* values, const std::strin
       if (code == 8) out.flood_on = true;
       out.m[gi] = code;
       out.m_column[gi] = w.column;
+    } else if (w.letter == '@') {
+      out.has_polar_radius = true;
+      out.polar_radius = v;
+      out.polar_radius_column = w.column;
+    } else if (w.letter == '^') {
+      out.has_polar_angle = true;
+      out.polar_angle = v;
+      out.polar_angle_column = w.column;
     } else {
       auto bit = static_cast<std::uint32_t>(w.letter - 'a');
       if ((out.present >> bit) & 1u) {

@@ -111,6 +111,7 @@ class Executor final : public ComputedParameters {
   // motion.cpp
   void do_motion(const BlockCommand& b, int motion, bool g53);
   canonical::Pose find_end(const BlockCommand& b, bool g53) const;
+  canonical::Pose polar_end(const BlockCommand& b, canonical::Pose end, bool g53) const;
   void straight(bool feed, const canonical::Pose& end, const BlockCommand* b);
   void set_inverse_time_rate(double length, const BlockCommand& b);
 
