@@ -25,6 +25,10 @@ void Executor::fail(std::uint32_t column, const std::string& message) const {
   throw InputError({file_ ? *file_ : std::string(), line_, column}, message);
 }
 
+void Executor::warn(std::uint32_t column, const std::string& message) const {
+  if (options_.strict) fail(column, message + " (refused under --strict)");
+  if (options_.warning) options_.warning({file_ ? *file_ : std::string(), line_, column}, message);
+}
 
 void Executor::emit(Data data) {
   Call call{std::move(data), source_, cycle_tag_};
