@@ -215,3 +215,59 @@ TEST(Heidenhain, ToleranceCycleSetsThePathTolerance) {
 }
 
 }  // namespace
+
+namespace {
+
+// ---- SINUMERIK 840D
+
+TEST(Siemens840D, MessagesJoinTextAndValues) {
+  const Collect c = run("R1=2.5\nDEF REAL D=4\nMSG(\"Depth \" << R1*2 << \" of \" << D << \" mm\")\nMSG(\"plain\")\nM30\n",
+                        options_for(Dialect::Siemens840D));
+  const auto messages = c.all<canonical::Message>();
+  ASSERT_EQ(messages.size(), 2u);
+  EXPECT_EQ(messages[0].text, "Depth 5 of 4 mm");
+  EXPECT_EQ(messages[1].text, "plain");
+}
+
+TEST(Siemens840D, GotoSearchesForwardThenBackward) {
+  // GOTO finds the label after the block first; a label written twice is the nearest that way
+  const Collect c = run("R1=0\nSTART:\nR1=R1+1\nIF R1==3 GOTO DONE\nG0 X=R1\nGOTO START\nDONE:\nG0 Y7\nM30\n",
+                        options_for(Dialect::Siemens840D));
+  ASSERT_EQ(c.ends().size(), 3u);
+  EXPECT_TRUE(near(c.ends()[0], 1, 0, 0));
+  EXPECT_TRUE(near(c.ends()[1], 2, 0, 0));
+  EXPECT_TRUE(near(c.ends()[2], 2, 7, 0));
+}
+
+TEST(Siemens840D, ShopMillHeaderAndEndAreReadItsStepsRefusedByName) {
+  const Collect c = run("N10 G17 G90 DIAMOF;*GP*;*RO*;*HD*\nN15 E_HEAD(1,\"PART\",0.5,100,0,2,0,1,0)\n"
+                        "N20 G0 X10 Y10 Z50\nN25 E_END(1,0,0)\n",
+                        options_for(Dialect::Siemens840D));
+  ASSERT_EQ(c.ends().size(), 1u);
+  EXPECT_FALSE(c.all<canonical::ProgramEnd>().empty());
+  const InputError e = error_of("N10 G17 G90\nN15 E_HEAD(1,\"PART\",0.5,100,0,2,0,1,0)\nN20 E_MI_PL(1,2,3)\nN25 E_END(1,0,0)\n",
+                                options_for(Dialect::Siemens840D));
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_EQ(e.where().column, 5u);
+  EXPECT_NE(e.message().find("E_MI_PL (face milling)"), std::string::npos) << e.message();
+}
+
+TEST(Siemens840D, HighSpeedSettingsCycleSetsThePathTolerance) {
+  const Collect c = run("CYCLE832(0.05,0,1)\nM30\n", options_for(Dialect::Siemens840D));
+  const auto modes = c.all<canonical::SetMotionControlMode>();
+  ASSERT_FALSE(modes.empty());
+  EXPECT_NEAR(modes.back().tolerance, 0.05, 1e-12);
+}
+
+TEST(Siemens840D, UnknownCallsAndTiltedFramesAreLocated) {
+  InputError e = error_of("N10 G0 X0\nN20 NOSUCH(1,2)\nM30\n", options_for(Dialect::Siemens840D));
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 5u);
+  EXPECT_NE(e.message().find("NOSUCH.SPF"), std::string::npos) << e.message();
+  e = error_of("N10 G0 X0\nN20 ROT Y-90\nM30\n", options_for(Dialect::Siemens840D));
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 5u);
+  EXPECT_NE(e.message().find("angle head"), std::string::npos) << e.message();
+}
+
+}  // namespace
