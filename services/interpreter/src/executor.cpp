@@ -173,11 +173,11 @@ bool Executor::execute(const BlockCommand& b, const Source& source, const std::s
   switch (g0) {
     case 100: do_g10(b); break;
     case 280: case 281: case 300: case 301: do_home(b, g0); break;
-    case 920: case 921: case 922: case 923: do_axis_offsets(b, g0); break;
+    case 520: case 920: case 921: case 922: case 923: do_axis_offsets(b, g0); break;
     default: break;
   }
   // motion: the block's motion code, or the modal one when axis words are present
-  bool axis_motion = g0 != 100 && g0 != 280 && g0 != 300 && g0 != 920 && b.g[kGToolLength] != 431 && b.has_axis();
+  bool axis_motion = g0 != 100 && g0 != 280 && g0 != 300 && g0 != 520 && g0 != 920 && b.g[kGToolLength] != 431 && b.has_axis();
   if (b.g[kGMotion] != -1) {
     do_motion(b, b.g[kGMotion], g0 == 530);
   } else if (axis_motion) {
@@ -199,7 +199,7 @@ void Executor::write_position_parameters() {
 void Executor::check_block(const BlockCommand& b) {
   int g0 = b.g[kGNonModal];
   int motion = b.g[kGMotion];
-  bool g0_uses_axes = g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || b.g[kGToolLength] == 431;
+  bool g0_uses_axes = g0 == 100 || g0 == 280 || g0 == 300 || g0 == 520 || g0 == 920 || b.g[kGToolLength] == 431;
   if (g0_uses_axes && motion != -1 && motion != 800 && b.has_axis()) {
     fail(b.g_column[kGMotion], "Cannot use two G codes that both use axis values");
   }

@@ -108,6 +108,7 @@ class Executor final : public ComputedParameters {
   void do_axis_offsets(const BlockCommand& b, int g);
   void apply_origin_change(const canonical::Pose& old_total_mm);
   canonical::Pose origin_mm() const;  // g5x + g92 (when active)
+  canonical::Pose current_in_system(int system) const;  // LinuxCNC find_current_in_system
   void emit_g5x();
   void emit_g92();
   void write_parameters();
