@@ -29,6 +29,7 @@ struct CanonArguments {
   std::string subroutine_path;
   std::string dialect = "rs274ngc";
   std::string heidenhain_feed_units = "mm/min";
+  bool strict = false;
 };
 
 std::vector<std::filesystem::path> split_path(const std::string& text) {
@@ -62,6 +63,10 @@ int run_canon(const CanonArguments& args) {
                  std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
   }
   if (args.heidenhain_feed_units == "mm/s") options.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
+  options.strict = args.strict;
+  options.warning = [](const SourceLocation& where, const std::string& message) {
+    std::fprintf(stderr, "%s: warning: %s\n", where.to_string().c_str(), message.c_str());
+  };
   interpreter::CanonPrinter printer(stdout);
   int status = exit_status::ok;
   try {
@@ -97,6 +102,8 @@ void add_canon_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units,
                   "Unit of Heidenhain F words (mm/s for FreeCAD's Heidenhain post; never guessed)")
       ->check(CLI::IsMember({"mm/min", "mm/s"}));
+  cmd->add_flag("--strict", args->strict,
+                "Refuse what is otherwise read with a warning (machine builder M codes, G43 without tool lengths)");
   cmd->callback([args, &exit_code]() { exit_code = run_canon(*args); });
 }
 

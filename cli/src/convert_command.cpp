@@ -53,6 +53,7 @@ struct ConvertArguments {
   std::string html;
   std::string subroutine_path;
   std::optional<double> security_plane;
+  bool strict = false;
 };
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
@@ -222,8 +223,22 @@ cc1_builder::Options builder_options(const ConvertArguments& args, const std::op
   return options;
 }
 
-interpreter::Options interpreter_options(const ConvertArguments& args, const Input& program, const setup::ToolList& tools) {
+// The interpreter's warnings (collected in `read`) before the builder's: they come from reading
+// the program.
+std::vector<cc1_builder::Warning> all_warnings(const std::vector<cc1_builder::Warning>& read,
+                                               const std::vector<cc1_builder::Warning>& built) {
+  std::vector<cc1_builder::Warning> all = read;
+  all.insert(all.end(), built.begin(), built.end());
+  return all;
+}
+
+interpreter::Options interpreter_options(const ConvertArguments& args, const Input& program, const setup::ToolList& tools,
+                                         std::vector<cc1_builder::Warning>& warnings) {
   interpreter::Options interp;
+  interp.strict = args.strict;
+  interp.warning = [&warnings](const SourceLocation& where, const std::string& message) {
+    warnings.push_back({where, message});
+  };
   interp.dialect = dialect_of(args.dialect);
   if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
     const auto detected = program.text ? interpreter::detect_dialect(*program.text)
@@ -263,7 +278,8 @@ void print_warnings(const std::vector<cc1_builder::Warning>& warnings) {
 int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_point t0) {
   const std::optional<setup::Stock> stock = setup::read_stock(args.stock);
   const cc1_builder::Options options = builder_options(args, stock);
-  const interpreter::Options interp = interpreter_options(args, run.program, options.tools);
+  std::vector<cc1_builder::Warning> read_warnings;
+  const interpreter::Options interp = interpreter_options(args, run.program, options.tools, read_warnings);
 
   step_writer::StepncWriteOptions write;
   write.file_name = part21_file_name(run);
@@ -280,6 +296,7 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
   const std::uint64_t bytes = writer.finish(project);
   const auto t_written = Clock::now();
 
+  const std::vector<cc1_builder::Warning> warnings = all_warnings(read_warnings, builder.warnings());
   if (report) {
     // The writer's and the report's work happens inside the builder's calls; each is counted
     // once, under step_writer. "output" is the report's last part, the syncs and renames.
@@ -287,7 +304,7 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
     Cc1Report::Tail tail;
     tail.canonical_calls = builder.calls_seen();
     tail.output_bytes = bytes;
-    for (const auto& w : builder.warnings()) tail.warnings.emplace_back(w.where.to_string(), w.message);
+    for (const auto& w : warnings) tail.warnings.emplace_back(w.where.to_string(), w.message);
     tail.timings_ms = {{"read_inputs", ms(t_interpret - t0)},
                        {"interpreter", ms(t_built - t_interpret) - ms(sink.spent())},
                        {"cc1_builder", ms(sink.spent()) - ms(elements.spent())},
@@ -297,7 +314,7 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
     report->finish(project, tail);
   }
   run.outputs.commit();
-  print_warnings(builder.warnings());
+  print_warnings(warnings);
   return 0;
 }
 
@@ -341,13 +358,14 @@ int run_convert(const ConvertArguments& args) {
     t_built = Clock::now();
   } else {
     const cc1_builder::Options options = builder_options(args, stock);
-    const interpreter::Options interp = interpreter_options(args, run.program, options.tools);
+    std::vector<cc1_builder::Warning> read_warnings;
+    const interpreter::Options interp = interpreter_options(args, run.program, options.tools, read_warnings);
     cc1_builder::Cc1Builder builder(options);
     TimedSink sink(builder, isatty(STDERR_FILENO) != 0, !args.report.empty());
     t_interpret = Clock::now();
     interpret(run.program, interp, sink);
     t_built = Clock::now();
-    warnings = builder.warnings();
+    warnings = all_warnings(read_warnings, builder.warnings());
     calls = builder.calls_seen();
     project = builder.take_project();
     builder_spent = sink.spent();
@@ -417,6 +435,8 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--html", args->html, "Also write an HTML page: top view, toolpaths, features (--level cc2)");
   cmd->add_option("--security-plane", args->security_plane, "Security plane Z in mm (default: the highest rapid)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
+  cmd->add_flag("--strict", args->strict,
+                "Refuse what is otherwise read with a warning (machine builder M codes, G43 without tool lengths)");
   cmd->callback([args, &exit_code]() { exit_code = run_convert(*args); });
 }
 

@@ -25,6 +25,10 @@ void Executor::fail(std::uint32_t column, const std::string& message) const {
   throw InputError({file_ ? *file_ : std::string(), line_, column}, message);
 }
 
+void Executor::warn(std::uint32_t column, const std::string& message) const {
+  if (options_.strict) fail(column, message + " (refused under --strict)");
+  if (options_.warning) options_.warning({file_ ? *file_ : std::string(), line_, column}, message);
+}
 
 void Executor::emit(Data data) {
   Call call{std::move(data), source_, cycle_tag_};
@@ -169,11 +173,11 @@ bool Executor::execute(const BlockCommand& b, const Source& source, const std::s
   switch (g0) {
     case 100: do_g10(b); break;
     case 280: case 281: case 300: case 301: do_home(b, g0); break;
-    case 920: case 921: case 922: case 923: do_axis_offsets(b, g0); break;
+    case 520: case 920: case 921: case 922: case 923: do_axis_offsets(b, g0); break;
     default: break;
   }
   // motion: the block's motion code, or the modal one when axis words are present
-  bool axis_motion = g0 != 100 && g0 != 280 && g0 != 300 && g0 != 920 && b.g[kGToolLength] != 431 &&
+  bool axis_motion = g0 != 100 && g0 != 280 && g0 != 300 && g0 != 520 && g0 != 920 && b.g[kGToolLength] != 431 &&
                      (b.has_axis() || b.has_polar());
   if (b.g[kGMotion] != -1) {
     do_motion(b, b.g[kGMotion], g0 == 530);
@@ -196,7 +200,7 @@ void Executor::write_position_parameters() {
 void Executor::check_block(const BlockCommand& b) {
   int g0 = b.g[kGNonModal];
   int motion = b.g[kGMotion];
-  bool g0_uses_axes = g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || b.g[kGToolLength] == 431;
+  bool g0_uses_axes = g0 == 100 || g0 == 280 || g0 == 300 || g0 == 520 || g0 == 920 || b.g[kGToolLength] == 431;
   if (b.has_polar()) {  // LinuxCNC enhance_block
     if (s_.plane != Plane::XY) fail(b.polar_column(), "Cannot use polar coordinate except in G17 plane");
     if (b.has('x')) fail(b.col('x'), "Cannot specify both polar coordinate and X word");

@@ -60,6 +60,11 @@ class Executor final : public ComputedParameters {
 
  private:
   [[noreturn]] void fail(std::uint32_t column, const std::string& message) const;
+ public:
+  // A warning about the block being run (Options::warning); with Options::strict an error.
+  void warn(std::uint32_t column, const std::string& message) const;
+
+ private:
 
   // executor.cpp
   void check_block(const BlockCommand& b);
@@ -103,6 +108,7 @@ class Executor final : public ComputedParameters {
   void do_axis_offsets(const BlockCommand& b, int g);
   void apply_origin_change(const canonical::Pose& old_total_mm);
   canonical::Pose origin_mm() const;  // g5x + g92 (when active)
+  canonical::Pose current_in_system(int system) const;  // LinuxCNC find_current_in_system
   void emit_g5x();
   void emit_g92();
   void write_parameters();
@@ -150,6 +156,7 @@ class Executor final : public ComputedParameters {
   // back behind the pending move. s_.position stays the programmed point.
   ToolTable tools_;               // the program's copy, edited by G10 L1/L10/L11
   bool tool_table_given_ = false; // without a table any tool number is accepted
+  bool warned_no_tool_length_ = false;  // G43 without a tool list: said once
   int current_pocket_ = 1;        // LinuxCNC's pocket of the loaded tool (rs274 starts at 1)
   ToolEntry spindle_tool_{};      // pocket 0: the loaded tool's data as M6 copied it (G41/G42
                                   // without D, #5400-#5413); M61 does not copy, G10 L1 updates it

@@ -25,11 +25,17 @@ void DialectMachine::at(std::uint32_t file, const std::string& file_name, std::u
   source_ = canonical::Source{file, line, n_number, n_digits};
   file_name_ = &file_name;
   line_ = line;
+  segments_.clear();
   executor_.set_source(source_);
 }
 
 void DialectMachine::fail(std::uint32_t column, const std::string& message) const {
-  throw InputError({*file_name_, line_, column}, message);
+  throw InputError(locate(*file_name_, line_, column, segments_), message);
+}
+
+void DialectMachine::warn(std::uint32_t column, const std::string& message) const {
+  if (options_.strict) fail(column, message + " (refused under --strict)");
+  if (options_.warning) options_.warning(locate(*file_name_, line_, column, segments_), message);
 }
 
 bool DialectMachine::execute(const NeutralBlock& nb) {
