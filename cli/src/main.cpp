@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   ncbridge::cli::add_submit_command(app, exit_code);
   ncbridge::cli::add_status_command(app, exit_code);
   ncbridge::cli::add_controller_sim_command(app, exit_code);
+  ncbridge::cli::add_capture_command(app, exit_code);
 #endif
   try {
     app.parse(argc, argv);

@@ -27,8 +27,8 @@ MODES = {linuxcnc.MODE_AUTO: "auto", linuxcnc.MODE_MDI: "mdi", linuxcnc.MODE_MAN
 def tool_table(stat):
     # The loaded tool table as LinuxCNC .tbl lines, in the machine's linear units.
     lines = []
-    for t in stat.tool_table:
-        if t.id <= 0:
+    for index, t in enumerate(stat.tool_table):
+        if index == 0 or t.id <= 0:  # entry 0 is the tool in the spindle, listed again below
             continue
         lines.append("T%d P%d Z%.6f D%.6f" % (t.id, t.id, t.zoffset, t.diameter))
     return "\n".join(lines) + ("\n" if lines else "")
@@ -89,7 +89,7 @@ def watch():
 while True:
     try:
         watch()
-    except linuxcnc.error as e:
+    except (linuxcnc.error, SystemError) as e:  # none running, or one starting or stopping
         emit({"kind": "lost", "reason": "no LinuxCNC controller: %s" % e})
         time.sleep(1.0)
     except BrokenPipeError:

@@ -167,6 +167,10 @@ TEST(RunTracker, AProgramThatCannotBeReadEndsTheRunAborted) {
   EXPECT_EQ(events[0].kind, RunEvent::Kind::Start);
   EXPECT_TRUE(events[1].aborted);
   EXPECT_NE(events[1].reason.find("no such file"), std::string::npos);
+  // the same execution goes on: it is not a new run; the next one after it stops is
+  EXPECT_TRUE(t.observe(at(Interp::Running, 5)).empty());
+  EXPECT_TRUE(t.observe(at(Interp::Idle, 0)).empty());
+  EXPECT_EQ(t.observe(at(Interp::Running, 3)).size(), 2u);
 }
 
 TEST(RunTracker, ALostControllerAbortsTheRun) {

@@ -14,17 +14,26 @@ constexpr std::size_t kMovesBeforeRestart = 2;
 
 std::vector<RunEvent> RunTracker::observe(const ControllerSample& sample) {
   std::vector<RunEvent> out;
+  if (wait_for_idle_) {
+    if (sample.interp != ControllerSample::Interp::Idle) return out;
+    wait_for_idle_ = false;
+  }
   if (!running_) {
     const bool starts = sample.mode == ControllerSample::Mode::Auto && sample.interp != ControllerSample::Interp::Idle &&
                         !sample.fault && !sample.program.empty();
     if (!starts) return out;
     start(sample, out);
-    if (!running_) return out;  // the program could not be loaded
+    if (!running_) {  // the program could not be loaded: this execution is not captured
+      wait_for_idle_ = sample.interp != ControllerSample::Interp::Idle;
+      return out;
+    }
   } else if (sample.fault) {
     finish(true, sample.fault_reason.empty() ? "the controller stopped with a fault" : sample.fault_reason, out);
+    wait_for_idle_ = sample.interp != ControllerSample::Interp::Idle;
     return out;
   } else if (sample.mode != ControllerSample::Mode::Auto) {
     finish(true, "the controller left automatic mode", out);
+    wait_for_idle_ = sample.interp != ControllerSample::Interp::Idle;
     return out;
   }
 

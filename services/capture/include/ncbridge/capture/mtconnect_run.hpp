@@ -43,6 +43,8 @@ class SampleCursor {
   // The first answer (/current, or /sample) sets where we are.
   Accepted accept(const MtconnectStreams& answer);
   std::optional<std::uint64_t> next() const { return next_; }
+  // What we had is gone from the agent: the next answer (a /current) is taken whole.
+  void resync() { next_.reset(); }
 
  private:
   std::optional<std::uint64_t> next_;

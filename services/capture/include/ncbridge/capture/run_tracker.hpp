@@ -82,6 +82,7 @@ class RunTracker {
 
   Loader loader_;
   bool running_ = false;
+  bool wait_for_idle_ = false;  // a run ended while the controller still ran: no new run until it stops
   bool seen_line_ = false;
   RunProgram program_;
   std::size_t cursor_ = 0;            // next block of program_.order to publish
