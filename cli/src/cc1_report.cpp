@@ -173,11 +173,14 @@ void Cc1Report::finish(const stepnc::Project& project, const Tail& tail) {
   text_ += "\"warnings\": [";
   for (std::size_t i = 0; i < tail.warnings.size(); ++i) {
     text_ += i == 0 ? "\n    {" : ",\n    {";
+    append_key(text_, "kind");
+    append_string(text_, tail.warnings[i].kind);
+    text_ += ", ";
     append_key(text_, "where");
-    append_string(text_, tail.warnings[i].first);
+    append_string(text_, tail.warnings[i].where.to_string());
     text_ += ", ";
     append_key(text_, "message");
-    append_string(text_, tail.warnings[i].second);
+    append_string(text_, tail.warnings[i].message);
     text_ += '}';
   }
   text_ += tail.warnings.empty() ? "],\n  " : "\n  ],\n  ";

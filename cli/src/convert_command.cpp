@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -25,6 +26,8 @@
 #include "html_report.hpp"
 #include "input_files.hpp"
 #include "output_files.hpp"
+#include "setup_checks.hpp"
+#include "warning.hpp"
 #include "ncbridge/cc1_builder/cc1_builder.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
@@ -53,6 +56,7 @@ struct ConvertArguments {
   std::string html;
   std::string subroutine_path;
   std::optional<double> security_plane;
+  bool strict = false;
 };
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
@@ -67,13 +71,18 @@ interpreter::Dialect dialect_of(const std::string& name) {
 }
 
 // Forwards the stream to the builder, timing the builder's share when a report wants it (two
-// clock readings a call cost a few percent) and showing progress on a terminal.
+// clock readings a call cost a few percent), telling the setup checks what only the stream
+// says, and showing progress on a terminal.
 class TimedSink final : public canonical::Sink {
  public:
-  TimedSink(cc1_builder::Cc1Builder& builder, bool progress, bool timed)
-      : builder_(builder), progress_(progress), timed_(timed) {}
-  void source_file(std::uint32_t index, std::string_view path) override { builder_.source_file(index, path); }
+  TimedSink(cc1_builder::Cc1Builder& builder, ProgramFacts& facts, bool progress, bool timed)
+      : builder_(builder), facts_(facts), progress_(progress), timed_(timed) {}
+  void source_file(std::uint32_t index, std::string_view path) override {
+    facts_.source_file(index, path);
+    builder_.source_file(index, path);
+  }
   void call(const canonical::Call& c) override {
+    facts_.call(c);
     if (timed_) {
       const auto start = Clock::now();
       builder_.call(c);
@@ -102,18 +111,21 @@ class TimedSink final : public canonical::Sink {
 
  private:
   cc1_builder::Cc1Builder& builder_;
+  ProgramFacts& facts_;
   bool progress_, timed_;
   bool shown_ = false;
   std::uint64_t calls_ = 0;
   Clock::duration spent_{};
 };
 
-// Streamed CC1: each finished workplan element goes to the Part 21 writer and, timed, the report
-// (the builder's clock runs around it too).
+// Streamed CC1: each finished workplan element goes to the setup checks, the Part 21 writer
+// and, timed, the report (the builder's clock runs around it too).
 class ElementWriter final : public cc1_builder::WorkplanSink {
  public:
-  ElementWriter(step_writer::StepncStreamWriter& writer, Cc1Report* report) : writer_(writer), report_(report) {}
+  ElementWriter(step_writer::StepncStreamWriter& writer, Cc1Report* report, SetupChecks& checks)
+      : writer_(writer), report_(report), checks_(checks) {}
   void element(const stepnc::Project& project, const stepnc::Executable& element) override {
+    checks_.element(project, element);
     if (!report_) {
       writer_.element(project, element);
       return;
@@ -128,6 +140,7 @@ class ElementWriter final : public cc1_builder::WorkplanSink {
  private:
   step_writer::StepncStreamWriter& writer_;
   Cc1Report* report_;
+  SetupChecks& checks_;
   Clock::duration spent_{};
 };
 
@@ -136,7 +149,7 @@ std::string_view kind_of(const stepnc::Executable& e) {
 }
 
 nlohmann::ordered_json report_of(const ConvertArguments& args, const std::string& program, const stepnc::Project& p,
-                         const std::vector<cc1_builder::Warning>& warnings, std::uint64_t calls,
+                         const std::vector<Warning>& warnings, std::uint64_t calls,
                          std::size_t bytes, const nlohmann::ordered_json& timings) {
   using json = nlohmann::ordered_json;
   json workingsteps = json::array();
@@ -166,7 +179,9 @@ nlohmann::ordered_json report_of(const ConvertArguments& args, const std::string
   json features = json::array();
   for (const auto& f : p.features) features.push_back({{"id", stepnc::feature_id(f)}, {"type", stepnc::entity_name(f)}});
   json warning_list = json::array();
-  for (const auto& w : warnings) warning_list.push_back({{"where", w.where.to_string()}, {"message", w.message}});
+  for (const auto& w : warnings) {
+    warning_list.push_back({{"kind", w.kind}, {"where", w.where.to_string()}, {"message", w.message}});
+  }
   return json{{"program", program},
               {"output", args.output},
               {"level", args.level},
@@ -254,8 +269,36 @@ void interpret(const Input& program, const interpreter::Options& interp, TimedSi
   }
 }
 
-void print_warnings(const std::vector<cc1_builder::Warning>& warnings) {
-  for (const auto& w : warnings) print_warning(w.where, w.message);
+SetupCheckInputs check_inputs(const ConvertArguments& args, const Input& program, const std::optional<setup::Stock>& stock,
+                              const setup::ToolList* tools) {
+  SetupCheckInputs in;
+  in.program = program.name;
+  in.stock = stock;
+  in.stock_file = args.stock;
+  in.tools = tools;
+  in.tools_file = args.tools;
+  in.security_plane = args.security_plane;
+  in.heidenhain_per_minute = (args.dialect == "heidenhain" || args.dialect == "auto") && args.heidenhain_feed_units == "mm/min";
+  return in;
+}
+
+// The setup checks' warnings first (they say the result may be wrong), then the rest.
+std::vector<Warning> all_warnings(const SetupChecks& checks, const std::vector<cc1_builder::Warning>& builder) {
+  std::vector<Warning> all = checks.warnings();
+  for (const auto& w : builder) all.push_back({"representation", w.where, w.message});
+  return all;
+}
+
+// --strict: a warning is an error; nothing is written (the outputs are not committed).
+void refuse_warnings_if_strict(const ConvertArguments& args, const std::vector<Warning>& warnings) {
+  if (!args.strict || warnings.empty()) return;
+  for (const auto& w : warnings) print_error(w.where, w.message + " [" + w.kind + "]");
+  throw InputError({}, std::to_string(warnings.size()) + (warnings.size() == 1 ? " warning" : " warnings") +
+                           " with --strict: nothing written");
+}
+
+void print_warnings(const std::vector<Warning>& warnings) {
+  for (const auto& w : warnings) print_warning(w.where, w.message + " [" + w.kind + "]");
 }
 
 // CC1 from a program, streamed: interpreter -> cc1_builder -> (Part 21 writer, report) element
@@ -270,13 +313,18 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
   step_writer::StepncStreamWriter writer(write, [&](std::string_view chunk) { run.stp->write(chunk); });
   std::optional<Cc1Report> report;
   if (run.report) report.emplace(*run.report, Cc1Report::Head{run.program.name, args.output, args.level});
-  ElementWriter elements(writer, report ? &*report : nullptr);
+  ProgramFacts facts;
+  SetupChecks checks(check_inputs(args, run.program, stock, &options.tools), &facts);
+  ElementWriter elements(writer, report ? &*report : nullptr, checks);
   cc1_builder::Cc1Builder builder(options, &elements);
-  TimedSink sink(builder, isatty(STDERR_FILENO) != 0, report.has_value());
+  TimedSink sink(builder, facts, isatty(STDERR_FILENO) != 0, report.has_value());
   const auto t_interpret = Clock::now();
   interpret(run.program, interp, sink);
   const auto t_built = Clock::now();
   const stepnc::Project project = builder.take_project();
+  checks.finish(project);
+  const std::vector<Warning> warnings = all_warnings(checks, builder.warnings());
+  refuse_warnings_if_strict(args, warnings);
   const std::uint64_t bytes = writer.finish(project);
   const auto t_written = Clock::now();
 
@@ -287,7 +335,7 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
     Cc1Report::Tail tail;
     tail.canonical_calls = builder.calls_seen();
     tail.output_bytes = bytes;
-    for (const auto& w : builder.warnings()) tail.warnings.emplace_back(w.where.to_string(), w.message);
+    tail.warnings = warnings;
     tail.timings_ms = {{"read_inputs", ms(t_interpret - t0)},
                        {"interpreter", ms(t_built - t_interpret) - ms(sink.spent())},
                        {"cc1_builder", ms(sink.spent()) - ms(elements.spent())},
@@ -297,7 +345,7 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
     report->finish(project, tail);
   }
   run.outputs.commit();
-  print_warnings(builder.warnings());
+  print_warnings(warnings);
   return 0;
 }
 
@@ -307,6 +355,7 @@ ConvertRun open_run(const ConvertArguments& args) {
   if (!args.html.empty() && args.level != "cc2") {
     throw UsageError("--html needs --level cc2 (it draws the recognised features)");
   }
+  if (args.security_plane && !std::isfinite(*args.security_plane)) throw UsageError("--security-plane must be a number");
   if (!args.tools.empty()) require_input_file(args.tools, "--tools");
   if (!args.stock.empty()) require_input_file(args.stock, "--stock");
   run.stp = &run.outputs.add(args.output, "-o");
@@ -325,7 +374,7 @@ int run_convert(const ConvertArguments& args) {
     throw UsageError("converting a program needs --tools and --stock");
   }
   if (!part21_input && args.level == "cc1") return run_streamed_cc1(args, run, t0);
-  std::vector<cc1_builder::Warning> warnings;
+  std::vector<Warning> warnings;
   std::uint64_t calls = 0;
   stepnc::Project project;
   std::optional<setup::Stock> stock;
@@ -336,21 +385,29 @@ int run_convert(const ConvertArguments& args) {
     t_interpret = Clock::now();
     auto read = run.program.text ? step_writer::read_stepnc(*run.program.text, run.program.name)
                                  : step_writer::read_stepnc_file(run.program.path);
-    for (const auto& d : read.warnings) warnings.push_back({d.where, d.message});
+    for (const auto& d : read.warnings) warnings.push_back({"input", d.where, d.message});
     project = std::move(read.project);
     t_built = Clock::now();
+    SetupChecks checks(check_inputs(args, run.program, stock, nullptr), nullptr);
+    for (const auto& e : project.main_workplan.its_elements) checks.element(project, e);
+    checks.finish(project);
+    warnings.insert(warnings.begin(), checks.warnings().begin(), checks.warnings().end());
   } else {
     const cc1_builder::Options options = builder_options(args, stock);
     const interpreter::Options interp = interpreter_options(args, run.program, options.tools);
     cc1_builder::Cc1Builder builder(options);
-    TimedSink sink(builder, isatty(STDERR_FILENO) != 0, !args.report.empty());
+    ProgramFacts facts;
+    TimedSink sink(builder, facts, isatty(STDERR_FILENO) != 0, !args.report.empty());
     t_interpret = Clock::now();
     interpret(run.program, interp, sink);
     t_built = Clock::now();
-    warnings = builder.warnings();
     calls = builder.calls_seen();
     project = builder.take_project();
     builder_spent = sink.spent();
+    SetupChecks checks(check_inputs(args, run.program, stock, &options.tools), &facts);
+    for (const auto& e : project.main_workplan.its_elements) checks.element(project, e);
+    checks.finish(project);
+    warnings = all_warnings(checks, builder.warnings());
   }
   // CC2: the features recognised in the CC1 model, with their workingsteps (cc2_output.hpp).
   std::optional<Cc2Output> cc2;
@@ -366,13 +423,15 @@ int run_convert(const ConvertArguments& args) {
   const auto t_written = Clock::now();
 
   if (cc2) {
-    for (const auto& w : cc2->warnings) {
-      cc1_builder::Warning warning;
-      warning.where.file = run.program.name;
-      warning.message = w;
-      warnings.push_back(std::move(warning));
+    for (const auto& message : cc2->warnings) {
+      Warning w;
+      w.kind = "recognition";
+      w.where.file = run.program.name;
+      w.message = message;
+      warnings.push_back(std::move(w));
     }
   }
+  refuse_warnings_if_strict(args, warnings);
   if (run.report) {
     const double builder_ms = ms(builder_spent);
     nlohmann::ordered_json timings{{"read_inputs", ms(t_interpret - t0)},
@@ -390,7 +449,10 @@ int run_convert(const ConvertArguments& args) {
     HtmlReportInput page;
     page.title = run.program.from_stdin() ? run.program.name : run.program.path.filename().string();
     page.cc2 = &*cc2;
-    for (const auto& w : warnings) page.warnings.push_back(w.where.to_string() + ": " + w.message);
+    for (const auto& w : warnings) {
+      const bool setup = w.kind != "representation" && w.kind != "recognition" && w.kind != "input";
+      (setup ? page.setup_warnings : page.warnings).push_back(w.where.to_string() + ": " + w.message);
+    }
     run.html->write(html_report(page));
   }
   run.outputs.commit();
@@ -417,6 +479,7 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--html", args->html, "Also write an HTML page: top view, toolpaths, features (--level cc2)");
   cmd->add_option("--security-plane", args->security_plane, "Security plane Z in mm (default: the highest rapid)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
+  cmd->add_flag("--strict", args->strict, "A warning is an error: exit 1 and write nothing");
   cmd->callback([args, &exit_code]() { exit_code = run_convert(*args); });
 }
 
