@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "errors.hpp"
+#include "feedback.hpp"
 #include "input_files.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/interpreter/canon_printer.hpp"
@@ -41,7 +42,7 @@ std::vector<std::filesystem::path> split_path(const std::string& text) {
   return dirs;
 }
 
-int run_canon(const CanonArguments& args) {
+int run_canon(const CanonArguments& args, const Feedback& feedback) {
   if (!args.tool_table.empty() && !args.tools.empty()) throw UsageError("--tool-table and --tools: give one tool list");
   if (!args.tool_table.empty()) require_input_file(args.tool_table, "--tool-table");
   if (!args.tools.empty()) require_input_file(args.tools, "--tools");
@@ -58,8 +59,7 @@ int run_canon(const CanonArguments& args) {
   if (options.dialect == interpreter::Dialect::Auto) {
     const auto detected = program.text ? interpreter::detect_dialect(*program.text) : interpreter::detect_dialect_file(program.path);
     options.dialect = detected.dialect;
-    std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
-                 std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
+    feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " + detected.reason + ")");
   }
   if (args.heidenhain_feed_units == "mm/s") options.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
   interpreter::CanonPrinter printer(stdout);
@@ -97,7 +97,7 @@ void add_canon_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units,
                   "Unit of Heidenhain F words (mm/s for FreeCAD's Heidenhain post; never guessed)")
       ->check(CLI::IsMember({"mm/min", "mm/s"}));
-  cmd->callback([args, &exit_code]() { exit_code = run_canon(*args); });
+  cmd->callback([args, cmd, &exit_code]() { exit_code = run_canon(*args, Feedback(verbosity_of(*cmd))); });
 }
 
 }  // namespace ncbridge::cli
