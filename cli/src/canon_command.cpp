@@ -30,6 +30,7 @@ struct CanonArguments {
   std::string subroutine_path;
   std::string dialect = "rs274ngc";
   std::string heidenhain_feed_units = "mm/min";
+  bool strict = false;
 };
 
 std::vector<std::filesystem::path> split_path(const std::string& text) {
@@ -62,6 +63,11 @@ int run_canon(const CanonArguments& args, const Feedback& feedback) {
     feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " + detected.reason + ")");
   }
   if (args.heidenhain_feed_units == "mm/s") options.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
+  options.strict = args.strict;
+  options.warning = [](const SourceLocation& where, const std::string& message) {
+    std::fflush(stdout);
+    print_warning(where, message);
+  };
   interpreter::CanonPrinter printer(stdout);
   int status = exit_status::ok;
   try {
@@ -97,6 +103,8 @@ void add_canon_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units,
                   "Unit of Heidenhain F words (mm/s for FreeCAD's Heidenhain post; never guessed)")
       ->check(CLI::IsMember({"mm/min", "mm/s"}));
+  cmd->add_flag("--strict", args->strict,
+                "Refuse what is otherwise read with a warning (machine builder M codes, G43 without tool lengths)");
   cmd->callback([args, cmd, &exit_code]() { exit_code = run_canon(*args, Feedback(verbosity_of(*cmd))); });
 }
 

@@ -236,9 +236,21 @@ cc1_builder::Options builder_options(const ConvertArguments& args, const std::op
   return options;
 }
 
-interpreter::Options interpreter_options(const ConvertArguments& args, const ConvertRun& run, const setup::ToolList& tools) {
+// The interpreter's warnings go to `warnings` (kind "reading"): what it read although the
+// controller's data is missing or the construct has no motion of its own. --strict makes the
+// interpreter refuse them itself, at their place in the program.
+interpreter::Options interpreter_options(const ConvertArguments& args, const ConvertRun& run, const setup::ToolList& tools,
+                                         std::vector<Warning>& warnings) {
   const Input& program = run.program;
   interpreter::Options interp;
+  interp.strict = args.strict;
+  interp.warning = [&warnings](const SourceLocation& where, const std::string& message) {
+    Warning w;
+    w.kind = "reading";
+    w.where = where;
+    w.message = message;
+    warnings.push_back(std::move(w));
+  };
   interp.dialect = dialect_of(args.dialect);
   if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
     const auto detected = program.text ? interpreter::detect_dialect(*program.text)
@@ -314,10 +326,19 @@ SetupCheckInputs check_inputs(const ConvertArguments& args, const Input& program
   return in;
 }
 
-// The setup checks' warnings first (they say the result may be wrong), then the rest.
-std::vector<Warning> all_warnings(const SetupChecks& checks, const std::vector<cc1_builder::Warning>& builder) {
+// The setup checks' warnings first (they say the result may be wrong), then the
+// interpreter's (from reading the program), then the builder's.
+std::vector<Warning> all_warnings(const SetupChecks& checks, const std::vector<Warning>& read,
+                                  const std::vector<cc1_builder::Warning>& builder) {
   std::vector<Warning> all = checks.warnings();
-  for (const auto& w : builder) all.push_back({"representation", w.where, w.message});
+  all.insert(all.end(), read.begin(), read.end());
+  for (const auto& w : builder) {
+    Warning warning;
+    warning.kind = "representation";
+    warning.where = w.where;
+    warning.message = w.message;
+    all.push_back(std::move(warning));
+  }
   return all;
 }
 
@@ -337,7 +358,8 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
   const std::optional<setup::Stock> stock = setup::read_stock(args.stock);
   const cc1_builder::Options options = builder_options(args, stock);
   run.feedback.detail(setup_detail(options, args));
-  const interpreter::Options interp = interpreter_options(args, run, options.tools);
+  std::vector<Warning> read_warnings;
+  const interpreter::Options interp = interpreter_options(args, run, options.tools, read_warnings);
 
   step_writer::StepncWriteOptions write;
   write.file_name = part21_file_name(run);
@@ -356,7 +378,7 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
                       seconds(ms(t_built - t_interpret) / 1000));
   const stepnc::Project project = builder.take_project();
   checks.finish(project);
-  const std::vector<Warning> warnings = all_warnings(checks, builder.warnings());
+  const std::vector<Warning> warnings = all_warnings(checks, read_warnings, builder.warnings());
   refuse_warnings_if_strict(args, warnings, *run.progress);
   const std::uint64_t bytes = writer.finish(project);
   const auto t_written = Clock::now();
@@ -432,7 +454,8 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
   } else {
     const cc1_builder::Options options = builder_options(args, stock);
     run.feedback.detail(setup_detail(options, args));
-    const interpreter::Options interp = interpreter_options(args, run, options.tools);
+    std::vector<Warning> read_warnings;
+    const interpreter::Options interp = interpreter_options(args, run, options.tools, read_warnings);
     cc1_builder::Cc1Builder builder(options);
     ProgramFacts facts;
     TimedSink sink(builder, facts, *run.progress, !args.report.empty());
@@ -447,7 +470,7 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
     SetupChecks checks(check_inputs(args, run.program, stock, &options.tools), &facts);
     for (const auto& e : project.main_workplan.its_elements) checks.element(project, e);
     checks.finish(project);
-    warnings = all_warnings(checks, builder.warnings());
+    warnings = all_warnings(checks, read_warnings, builder.warnings());
   }
   // CC2: the features recognised in the CC1 model, with their workingsteps (cc2_output.hpp).
   std::optional<Cc2Output> cc2;
@@ -531,7 +554,9 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--html", args->html, "Also write an HTML page: top view, toolpaths, features (--level cc2)");
   cmd->add_option("--security-plane", args->security_plane, "Security plane Z in mm (default: the highest rapid)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
-  cmd->add_flag("--strict", args->strict, "A warning is an error: exit 1 and write nothing");
+  cmd->add_flag("--strict", args->strict,
+                "A warning is an error: exit 1, nothing written (the interpreter refuses machine builder M codes, G43 "
+                "without tool lengths at their place)");
   cmd->callback([args, cmd, &exit_code]() { exit_code = run_convert(*args, verbosity_of(*cmd)); });
 }
 

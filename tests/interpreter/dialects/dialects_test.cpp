@@ -104,7 +104,10 @@ std::vector<ConstructCase> construct_cases() {
     if (!fs::exists(kHere / dialect)) continue;
     for (const auto& entry : fs::directory_iterator(kHere / dialect)) {
       // programs the constructs call (Heidenhain CALL PGM) sit in subdirectories
-      if (entry.is_regular_file() && entry.path().extension() != ".ngc") cases.push_back({dialect, entry.path()});
+      // and SINUMERIK subprograms (.SPF) beside the program that calls them
+      std::string ext = entry.path().extension().string();
+      for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      if (entry.is_regular_file() && ext != ".ngc" && ext != ".spf") cases.push_back({dialect, entry.path()});
     }
   }
   std::sort(cases.begin(), cases.end(), [](const auto& a, const auto& b) { return a.program < b.program; });
