@@ -14,5 +14,6 @@ void add_up_command(CLI::App& app, int& exit_code);
 void add_submit_command(CLI::App& app, int& exit_code);
 void add_status_command(CLI::App& app, int& exit_code);
 void add_controller_sim_command(CLI::App& app, int& exit_code);
+void add_capture_command(CLI::App& app, int& exit_code);  // live capture from LinuxCNC, MTConnect
 
 }  // namespace ncbridge::cli

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   add_submit_command(app, exit_code);
   add_status_command(app, exit_code);
   add_controller_sim_command(app, exit_code);
+  add_capture_command(app, exit_code);
 #endif
   if (const auto error = command_error(app, argc, argv)) {
     print_error(*error);
