@@ -63,6 +63,7 @@ int run_check(const CheckArguments& args, const Feedback& feedback) {
     }
     schema_path = *found;
   }
+  feedback.detail("schema: " + schema_path.string());
   const Input file = open_input(args.file, "file");
   step_writer::part21::ReadResult read = file.text ? step_writer::part21::read_part21(*file.text, file.name)
                                                    : step_writer::part21::read_part21_file(file.path);
