@@ -25,6 +25,8 @@ if [[ "${1:-}" == "--tests" ]]; then
   # The reference tools the tests compare with: LinuxCNC's standalone interpreter `rs274` and its
   # simulated controller (linuxcnc-uspace), and a headless browser for the HTML pages.
   packages+=(linuxcnc-uspace chromium)
+  # The install test: bash completion run as bash runs it, the man page rendered, the .deb made.
+  packages+=(bash-completion groff-base man-db dpkg-dev)
 fi
 
 missing=()

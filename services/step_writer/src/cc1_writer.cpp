@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "ncbridge/common/version.hpp"
 #include "ncbridge/step_writer/part21_reader.hpp"
 #include "ncbridge/step_writer/part21_writer.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
@@ -786,6 +787,9 @@ std::string header_text(const StepncWriteOptions& options) {
   part21::Graph header_only;
   header_only.header.description = options.description;
   header_only.header.name = options.file_name;
+  const std::string ncbridge(version_string());
+  header_only.header.preprocessor_version = options.preprocessor_version.empty() ? ncbridge : options.preprocessor_version;
+  header_only.header.originating_system = options.originating_system.empty() ? ncbridge : options.originating_system;
   header_only.header.schema = {"MACHINING_SCHEMA", "MILLING_SCHEMA"};
   if (options.unix_time) header_only.header.time_stamp = part21::time_stamp_of(*options.unix_time);
   // The header as the generic writer writes it, up to the DATA section it opens.
