@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <optional>
 
 #include "ncbridge/step_writer/part21_reader.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
@@ -147,28 +148,117 @@ class Cc1Reader {
     for (const Value& v : list(i, 1)) l.points.push_back(point_ref(reference_in(v, i), i));
     return l;
   }
-  sn::TrimmedCircle trimmed_circle(const Instance& i) const {
-    const Instance& circle = expect(reference(i, 1), {"CIRCLE"}, i);
+  // A trim of a TRIMMED_CURVE: its point and its parameter, either of which may be missing
+  // (NIST's files trim by points only).
+  struct Trim {
+    std::optional<sn::CartesianPoint> point;
+    std::optional<double> parameter;
+  };
+  Trim trim(const Instance& i, std::size_t n) const {
+    Trim t;
+    for (const Value& v : list(i, n)) {
+      if (v.is_reference()) t.point = point_ref(v.as_reference(), i);
+      else t.parameter = v.as_number();
+    }
+    if (!t.point && !t.parameter) fail(i, "a trim needs a point or a PARAMETER_VALUE");
+    return t;
+  }
+  // Local coordinates of a point in a placement: along ref_direction, axis x ref_direction, axis.
+  static sn::CartesianPoint local(const sn::Axis2Placement3d& a, const sn::CartesianPoint& p) {
+    const double dx = p.x - a.location.x, dy = p.y - a.location.y, dz = p.z - a.location.z;
+    const sn::Direction& z = a.axis;
+    const sn::Direction& x = a.ref_direction;
+    const sn::Direction y{z.y * x.z - z.z * x.y, z.z * x.x - z.x * x.z, z.x * x.y - z.y * x.x};
+    return {dx * x.x + dy * x.y + dz * x.z, dx * y.x + dy * y.y + dz * y.z, dx * z.x + dy * z.y + dz * z.z};
+  }
+  static sn::CartesianPoint global(const sn::Axis2Placement3d& a, double lx, double ly, double lz) {
+    const sn::Direction& z = a.axis;
+    const sn::Direction& x = a.ref_direction;
+    const sn::Direction y{z.y * x.z - z.z * x.y, z.z * x.x - z.x * x.z, z.x * x.y - z.y * x.x};
+    return {a.location.x + lx * x.x + ly * y.x + lz * z.x, a.location.y + lx * x.y + ly * y.y + lz * z.y,
+            a.location.z + lx * x.z + ly * y.z + lz * z.z};
+  }
+  sn::TrimmedCircle trimmed_circle(const Instance& i, const Instance& circle) const {
     sn::TrimmedCircle t;
     t.position = placement(reference(circle, 1), circle);
     t.radius = number(circle, 2);
-    auto trim = [&](std::size_t n, sn::CartesianPoint& pt, double& parameter) {
-      bool have_point = false, have_parameter = false;
-      for (const Value& v : list(i, n)) {
-        if (v.is_reference()) {
-          pt = point_ref(v.as_reference(), i);
-          have_point = true;
+    auto resolve = [&](const Trim& tr, sn::CartesianPoint& pt, double& parameter) {
+      constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+      if (tr.point) {
+        pt = *tr.point;
+        if (tr.parameter) {
+          parameter = *tr.parameter;
         } else {
-          parameter = v.as_number();
-          have_parameter = true;
+          const sn::CartesianPoint l = local(t.position, pt);
+          parameter = std::atan2(l.y, l.x) * kDegrees;
+          if (parameter < 0) parameter += 360.0;
         }
+      } else {
+        parameter = *tr.parameter;
+        pt = global(t.position, t.radius * std::cos(parameter / kDegrees), t.radius * std::sin(parameter / kDegrees), 0);
       }
-      if (!have_point || !have_parameter) fail(i, "each trim needs a point and a PARAMETER_VALUE");
     };
-    trim(2, t.trim_1_point, t.trim_1_parameter);
-    trim(3, t.trim_2_point, t.trim_2_parameter);
+    resolve(trim(i, 2), t.trim_1_point, t.trim_1_parameter);
+    resolve(trim(i, 3), t.trim_2_point, t.trim_2_parameter);
     t.sense_agreement = flag(i, 4);
     return t;
+  }
+  // NIST's HELIX(name, position, radius, pitch) (not in the schema's Part 42 subset) trimmed by
+  // two points: as a polyline within 0.001 mm of it, as the CC1 writer writes helices (docs/cc1.md).
+  sn::Polyline trimmed_helix(const Instance& i, const Instance& helix) const {
+    const sn::Axis2Placement3d a = placement(reference(helix, 1), helix);
+    const double radius = number(helix, 2), pitch = number(helix, 3);
+    const Trim t1 = trim(i, 2), t2 = trim(i, 3);
+    if (!t1.point || !t2.point) fail(i, "a trimmed HELIX needs its trims as points");
+    if (radius <= 0) fail(helix, "the radius must be positive");
+    const sn::CartesianPoint s = local(a, *t1.point), e = local(a, *t2.point);
+    constexpr double kPi = 3.14159265358979323846;
+    const double a0 = std::atan2(s.y, s.x), a1 = std::atan2(e.y, e.x);
+    const bool ccw = flag(i, 4);
+    double sweep;
+    if (pitch != 0 && std::fabs(e.z - s.z) > 1e-9) {
+      sweep = (e.z - s.z) / pitch * 2 * kPi;  // signed: + counter-clockwise about the axis
+      double miss = std::remainder(a0 + sweep - a1, 2 * kPi);
+      if (std::fabs(miss) * radius > 0.01) fail(i, "the trim points are not on the helix");
+      sweep -= miss;
+    } else {
+      sweep = ccw ? a1 - a0 : a0 - a1;
+      while (sweep <= 1e-12) sweep += 2 * kPi;
+      if (!ccw) sweep = -sweep;
+    }
+    constexpr double kChordTolerance = 0.001;  // mm
+    const double step = 2 * std::acos(std::max(-1.0, 1 - kChordTolerance / radius));
+    const auto pieces = static_cast<std::size_t>(std::max(1.0, std::ceil(std::fabs(sweep) / step)));
+    sn::Polyline l;
+    l.points.push_back(*t1.point);
+    for (std::size_t k = 1; k < pieces; ++k) {
+      const double f = static_cast<double>(k) / static_cast<double>(pieces);
+      const double angle = a0 + sweep * f;
+      l.points.push_back(global(a, radius * std::cos(angle), radius * std::sin(angle), s.z + (e.z - s.z) * f));
+    }
+    l.points.push_back(*t2.point);
+    return l;
+  }
+  // A TRIMMED_CURVE appended to a curve: an arc of a CIRCLE; the piece of a LINE between its
+  // trims and a piece of a HELIX (both in NIST's explicit toolpaths) as polylines.
+  void append_trimmed(const Instance& i, sn::CompositeCurve& c) const {
+    const Instance& basis = expect(reference(i, 1), {"CIRCLE", "LINE", "HELIX"}, i);
+    if (basis.entity() == "CIRCLE") {
+      c.segments.emplace_back(trimmed_circle(i, basis));
+    } else if (basis.entity() == "HELIX") {
+      c.segments.emplace_back(trimmed_helix(i, basis));
+    } else {
+      const Trim t1 = trim(i, 2), t2 = trim(i, 3);
+      auto on_line = [&](const Trim& t) {
+        if (t.point) return *t.point;
+        const sn::CartesianPoint origin = point_ref(reference(basis, 1), basis);
+        const Instance& vector = expect(reference(basis, 2), {"VECTOR"}, basis);
+        const sn::Direction d = direction(reference(vector, 1), vector);
+        const double k = number(vector, 2) * *t.parameter;
+        return sn::CartesianPoint{origin.x + d.x * k, origin.y + d.y * k, origin.z + d.z * k};
+      };
+      c.segments.emplace_back(sn::Polyline{{on_line(t1), on_line(t2)}});
+    }
   }
   sn::CompositeCurve curve(InstanceId id, const Instance& from) const {
     const Instance& i = expect(id, {"POLYLINE", "TRIMMED_CURVE", "COMPOSITE_CURVE"}, from);
@@ -176,13 +266,14 @@ class Cc1Reader {
     if (i.entity() == "POLYLINE") {
       c.segments.emplace_back(polyline(i));
     } else if (i.entity() == "TRIMMED_CURVE") {
-      c.segments.emplace_back(trimmed_circle(i));
+      append_trimmed(i, c);
     } else {
       for (const Value& v : list(i, 1)) {
         const Instance& seg = expect(reference_in(v, i), {"COMPOSITE_CURVE_SEGMENT"}, i);
+        if (!flag(seg, 1)) fail(seg, "a segment reversed (same_sense .F.) is not read");
         const Instance& parent = expect(reference(seg, 2), {"POLYLINE", "TRIMMED_CURVE"}, seg);
         if (parent.entity() == "POLYLINE") c.segments.emplace_back(polyline(parent));
-        else c.segments.emplace_back(trimmed_circle(parent));
+        else append_trimmed(parent, c);
       }
     }
     return c;

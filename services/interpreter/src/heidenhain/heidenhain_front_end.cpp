@@ -915,6 +915,20 @@ void Runner::cycle_def(const HBlock& b) {
   std::size_t dot = number.find('.');
   std::string cycle = dot == std::string::npos ? number : number.substr(0, dot);
   std::string sub = dot == std::string::npos ? "" : number;
+  if (cycle == "9") {
+    // 9 DWELL TIME acts at once: CYCL DEF 9.1 DWELL seconds
+    if (sub != "9.1") return;
+    std::size_t p = 0;
+    const std::string& text = b.text;
+    while (p < text.size() && !(lowering::is_digit(text[p]) || text[p] == '.')) ++p;
+    double seconds = 0;
+    if (!lowering::read_decimal(text, p, seconds)) m_.fail(b.column, "CYCL DEF 9.1 needs the dwell time in seconds");
+    NeutralBlock nb;
+    nb.g(4, b.column);
+    nb.add('p', seconds, b.column);
+    m_.execute(nb);
+    return;
+  }
   if (cycle == "7" || cycle == "10") {
     // coordinate transformation cycles act at once: 7 DATUM SHIFT, 10 ROTATION
     if (sub.empty() || sub == cycle + ".0") return;
