@@ -59,6 +59,11 @@ std::vector<sn::CartesianPoint> points_of(const sn::CompositeCurve& curve) {
       out.insert(out.end(), line->points.begin(), line->points.end());
       continue;
     }
+    if (const auto* spline = std::get_if<sn::BSplineCurve>(&segment)) {
+      const auto points = sn::bspline_polyline(*spline, 0.01);  // a drawing: a hundredth of a mm is plenty
+      out.insert(out.end(), points.begin(), points.end());
+      continue;
+    }
     const auto& arc = std::get<sn::TrimmedCircle>(segment);
     const auto& p = arc.position;
     const sn::Direction& r = p.ref_direction;

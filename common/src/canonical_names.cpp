@@ -60,6 +60,7 @@ template <> struct NameOf<OnReset> { static constexpr std::string_view value = "
 template <> struct NameOf<WaitSpindleOrientComplete> { static constexpr std::string_view value = "WAIT_SPINDLE_ORIENT_COMPLETE"; };
 template <> struct NameOf<Finish> { static constexpr std::string_view value = "FINISH"; };
 template <> struct NameOf<SetToolTableEntry> { static constexpr std::string_view value = "SET_TOOL_TABLE_ENTRY"; };
+template <> struct NameOf<NurbsFeed> { static constexpr std::string_view value = "NURBS_FEED"; };
 }  // namespace
 
 std::string_view name_of(const Data& data) {

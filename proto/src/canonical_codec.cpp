@@ -15,7 +15,7 @@ namespace {
 namespace w = ncbridge::pb;
 
 // Every alternative of Data has a case below; a new alternative must be added here too.
-static_assert(std::variant_size_v<Data> == 56, "canonical::Data changed: update canonical.proto and this codec");
+static_assert(std::variant_size_v<Data> == 57, "canonical::Data changed: update canonical.proto and this codec");
 
 [[noreturn]] void malformed(const std::string& what) {
   throw InputError({"<canonical batch>", 0, 0}, what);
@@ -149,6 +149,17 @@ struct DataEncoder {
     m->set_backangle(d.backangle);
     m->set_orientation(d.orientation);
   }
+  void operator()(const NurbsFeed& d) {
+    auto* m = out.mutable_nurbs_feed();
+    m->mutable_control_points()->Reserve(static_cast<int>(d.control_points.size()));
+    for (const NurbsControlPoint& p : d.control_points) {
+      auto* q = m->add_control_points();
+      q->set_x(p.x);
+      q->set_y(p.y);
+      q->set_weight(p.weight);
+    }
+    m->set_order(d.order);
+  }
 };
 
 void put_call(const Call& call, w::Call& out) {
@@ -276,6 +287,14 @@ Data get_data(const w::Call& in, const CallContext& at) {
       const auto& m = in.set_tool_table_entry();
       return SetToolTableEntry{m.pocket(), m.tool(), get_pose(m.offset()), m.diameter(),
                                m.frontangle(), m.backangle(), m.orientation()};
+    }
+    case C::kNurbsFeed: {
+      const auto& m = in.nurbs_feed();
+      NurbsFeed f;  // any values: what reads it checks the order against the points
+      f.order = m.order();
+      f.control_points.reserve(static_cast<std::size_t>(m.control_points_size()));
+      for (const auto& p : m.control_points()) f.control_points.push_back({p.x(), p.y(), p.weight()});
+      return f;
     }
     case C::DATA_NOT_SET: break;
   }

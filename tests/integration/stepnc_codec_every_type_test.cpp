@@ -19,7 +19,9 @@ Axis2Placement3d placement(double k) { return {{k, k + 0.5, -k}, {0, 1, 0}, {0, 
 TolerancedLengthMeasure measure(double k) { return {k, 0.01 * k, -0.02 * k, 5}; }
 CompositeCurve curve(double k) {
   TrimmedCircle arc{placement(k), 2.5 * k, {k, 0, 0}, 0.25, {0, k, 0}, 1.75, false};
-  return {{Polyline{{{0, 0, k}, {k, 1, k}, {k, k, k}}}, arc}};
+  BSplineCurve spline{2, {{k, k, 0}, {k, 2 * k, 0}, {3 * k, k, 0}}, {3, 3}, {0, k}, KnotType::PiecewiseBezierKnots,
+                      {1, 0.5 * k, 1}};
+  return {{Polyline{{{0, 0, k}, {k, 1, k}, {k, k, k}}}, arc, spline}};
 }
 LinearPath path(double k) { return {placement(k), measure(k), {0, 1, 0}}; }
 template <class F> F feature(double k) {

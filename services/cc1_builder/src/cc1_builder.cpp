@@ -158,6 +158,7 @@ struct Cc1Builder::State {
   int workingstep_count = 0, rapid_count = 0, freeform_count = 0, hole_count = 0;
   std::optional<double> max_rapid_z, max_motion_z;
   bool warned_unknown_start = false, warned_frame_shift = false, warned_inverse_time = false;
+  bool warned_nurbs_plane = false;
   bool warned_rotation = false, warned_single_tool = false;
   bool frame_changed = false;
 
@@ -398,9 +399,40 @@ struct Cc1Builder::State {
         std::visit(Overload{[&](const stepnc::Polyline& l) {
                               for (const auto& q : l.points) cut->min_z = std::min(cut->min_z, q.z);
                             },
-                            [&](const stepnc::TrimmedCircle& t) { cut->min_z = std::min(cut->min_z, lowest_z(t)); }},
+                            [&](const stepnc::TrimmedCircle& t) { cut->min_z = std::min(cut->min_z, lowest_z(t)); },
+                            [&](const stepnc::BSplineCurve&) {}},
                    curve.segments[i]);
       }
+    }
+    moved_to(end);
+  }
+
+  // A NURBS in the XY plane at the current height (G5, G5.1, G5.2/G5.3): one B-spline segment.
+  void nurbs_feed(const canonical::Call& c, const canonical::NurbsFeed& f) {
+    if (f.control_points.empty()) throw InputError(where(c.source), "NURBS_FEED without control points");
+    const double z = m.position ? m.position->z : 0.0;
+    std::vector<stepnc::CartesianPoint> points;
+    std::vector<double> weights;
+    points.reserve(f.control_points.size());
+    for (const auto& q : f.control_points) {
+      points.push_back({m.axis_to_setup(0, q.x), m.axis_to_setup(1, q.y), z});
+      weights.push_back(q.weight);
+    }
+    stepnc::BSplineCurve spline;
+    try {
+      spline = nurbs_curve(points, weights, f.order);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(where(c.source), e.what());
+    }
+    if (m.plane != canonical::Plane::XY && !warned_nurbs_plane) {
+      warn(c.source, "a NURBS (G5, G5.1, G5.2) outside the XY plane: its control points are taken in XY, as LinuxCNC does");
+      warned_nurbs_plane = true;
+    }
+    const stepnc::CartesianPoint end = points.back();
+    if (prepare_feed(c)) {
+      auto& curve = cut->trajectories.back().basiccurve;
+      if (!(points.front() == *m.position)) append_line(curve, *m.position, points.front());
+      append_bspline(curve, std::move(spline));
     }
     moved_to(end);
   }
@@ -503,6 +535,7 @@ struct Cc1Builder::State {
             [&](const canonical::SetFeedMode& f) { m.feed_mode = f.mode; },
             [&](const canonical::StraightFeed& f) { straight_feed(c, f); },
             [&](const canonical::ArcFeed& a) { arc_feed(c, a); },
+            [&](const canonical::NurbsFeed& f) { nurbs_feed(c, f); },
             [&](const canonical::StraightProbe& p) {
               break_all();
               warn_repeated(probes, c.source);

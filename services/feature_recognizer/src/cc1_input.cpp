@@ -56,10 +56,17 @@ std::uint16_t cycle_code(const stepnc::Operation& op) {
       op);
 }
 
+// B-spline toolpaths (G5, G5.1, G5.2 NURBS) are followed as chords this close to the curve.
+constexpr double kSplineChordTolerance = 0.001;  // mm
+
 void append_curve(const stepnc::CompositeCurve& curve, bool rapid, Point3& at, std::vector<Move>& moves) {
   for (const auto& segment : curve.segments) {
-    if (const auto* line = std::get_if<stepnc::Polyline>(&segment)) {
-      for (const auto& p : line->points) {
+    const auto* spline = std::get_if<stepnc::BSplineCurve>(&segment);
+    const std::vector<stepnc::CartesianPoint> spline_points =
+        spline ? stepnc::bspline_polyline(*spline, kSplineChordTolerance) : std::vector<stepnc::CartesianPoint>{};
+    const auto* line = std::get_if<stepnc::Polyline>(&segment);
+    if (line || spline) {
+      for (const auto& p : line ? line->points : spline_points) {
         const Point3 q = point(p);
         if (q == at) continue;
         Move m;

@@ -11,9 +11,9 @@ namespace {
 // Modal group of a G code (x10), -1 when unknown.
 int g_group(int g) {
   switch (g) {
-    case 40: case 100: case 280: case 281: case 300: case 301: case 530: case 920: case 921: case 922: case 923:
+    case 40: case 53: case 100: case 280: case 281: case 300: case 301: case 530: case 920: case 921: case 922: case 923:
       return kGNonModal;
-    case 0: case 10: case 20: case 30: case 330: case 331: case 382: case 383: case 384: case 385:
+    case 0: case 10: case 20: case 30: case 50: case 51: case 52: case 330: case 331: case 382: case 383: case 384: case 385:
     case 730: case 740: case 760: case 800: case 810: case 820: case 830: case 840: case 850: case 860: case 870:
     case 880: case 890:
       return kGMotion;

@@ -167,6 +167,8 @@ void format(Out& o, const Data& data, Units units) {
           o.integer(d.orientation);
         } else if constexpr (std::is_same_v<T, WaitSpindleOrientComplete>) {
           o.real(d.timeout);
+        } else if constexpr (std::is_same_v<T, NurbsFeed>) {
+          o.integer(static_cast<long long>(d.control_points.size())) << ", ...";  // as rs274 prints it
         } else if constexpr (std::is_same_v<T, Comment> || std::is_same_v<T, Message>) {
           o << '"' << d.text << '"';
         }

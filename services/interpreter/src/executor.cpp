@@ -167,6 +167,7 @@ bool Executor::execute(const BlockCommand& b, const Source& source, const std::s
   if (b.g[kGArcDistance] != -1) do_distance_mode(b.g[kGArcDistance]);
   if (b.g[kGRetract] != -1) do_retract_mode(b.g[kGRetract]);
   switch (g0) {
+    case 53: nurbs_end(b); break;
     case 100: do_g10(b); break;
     case 280: case 281: case 300: case 301: do_home(b, g0); break;
     case 920: case 921: case 922: case 923: do_axis_offsets(b, g0); break;
@@ -212,7 +213,10 @@ void Executor::check_block(const BlockCommand& b) {
   if (motion == 800 && axes && !g0_uses_axes) {
     fail(b.g_column[kGMotion], "Cannot use axis values with g80");
   }
-  if (motion == -1 && axes && !g0_uses_axes && s_.motion == 800) {
+  if (g0 == 53 && motion != 52 && motion != -1) {
+    fail(b.g_column[kGNonModal], "Between G5.2 and G5.3 codes, only additional G5.2 codes are allowed.");
+  }
+  if (motion == -1 && axes && !g0_uses_axes && (s_.motion == 800 || s_.motion == -1)) {
     fail(b.has_polar() ? b.polar_column() : 0, "Cannot use axis values without a g code that uses them");
   }
   if (g0 == 530 && motion != 0 && motion != 10 && !(motion == -1 && (s_.motion == 0 || s_.motion == 10))) {
@@ -220,8 +224,8 @@ void Executor::check_block(const BlockCommand& b) {
   }
   if (b.has('p') && b.g[kGNonModal] != 40 && b.g[kGNonModal] != 100 && b.g[kGControl] != 640 &&
       motion != 740 && motion != 820 && motion != 840 && motion != 860 && motion != 880 && motion != 890 &&
-      motion != 20 && motion != 30 && b.m[kMOverride] == -1 && b.m[kMSpindle] != 19 &&
-      !(motion == -1 && (s_.motion == 20 || s_.motion == 30 || s_.motion == 740 || s_.motion == 820 ||
+      motion != 20 && motion != 30 && motion != 50 && motion != 52 && b.m[kMOverride] == -1 && b.m[kMSpindle] != 19 &&
+      !(motion == -1 && (s_.motion == 20 || s_.motion == 30 || s_.motion == 52 || s_.motion == 740 || s_.motion == 820 ||
                          s_.motion == 840 || s_.motion == 860 || s_.motion == 880 || s_.motion == 890))) {
     fail(b.col('p'), "P word with no G code or M code that uses it");
   }

@@ -70,6 +70,16 @@ std::string_view toolpath_type_name(sn::ToolpathType t) {
   return "TRAJECTORY_PATH";
 }
 
+std::string_view knot_type_name(sn::KnotType t) {
+  switch (t) {
+    case sn::KnotType::UniformKnots: return "UNIFORM_KNOTS";
+    case sn::KnotType::QuasiUniformKnots: return "QUASI_UNIFORM_KNOTS";
+    case sn::KnotType::PiecewiseBezierKnots: return "PIECEWISE_BEZIER_KNOTS";
+    case sn::KnotType::Unspecified: break;
+  }
+  return "UNSPECIFIED";
+}
+
 using Bits3 = std::array<std::uint64_t, 3>;
 Bits3 bits_of(double x, double y, double z) {
   using R = part21::RecentInstances<3>;
@@ -308,6 +318,63 @@ class Cc1Writer {
     s_.enumeration("PARAMETER");
     return s_.end();
   }
+  // B_SPLINE_CURVE_WITH_KNOTS; with weights, the complex instance of it and
+  // RATIONAL_B_SPLINE_CURVE (with the supertypes, which carry no attributes in this schema).
+  InstanceId bspline(const sn::BSplineCurve& b) {
+    if (const std::string problem = sn::bspline_problem(b); !problem.empty()) {
+      throw std::invalid_argument("write_stepnc: a B_SPLINE_CURVE_WITH_KNOTS that is no B-spline: " + problem);
+    }
+    polyline_points_.clear();
+    for (const auto& c : b.control_points) polyline_points_.push_back(point(c));
+    const bool closed = b.control_points.front() == b.control_points.back();
+    auto b_spline_curve = [&] {
+      s_.string("");
+      s_.integer(b.degree);
+      s_.refs(polyline_points_);
+      s_.enumeration("UNSPECIFIED");
+      s_.boolean(closed);
+      s_.unknown();
+    };
+    auto with_knots = [&] {
+      s_.open_list();
+      for (int m : b.knot_multiplicities) s_.integer(m);
+      s_.close_list();
+      s_.open_list();
+      for (double k : b.knots) s_.real(k);
+      s_.close_list();
+      s_.enumeration(knot_type_name(b.knot_spec));
+    };
+    if (b.weights.empty()) {
+      s_.begin("B_SPLINE_CURVE_WITH_KNOTS");
+      b_spline_curve();
+      with_knots();
+      return s_.end();
+    }
+    const InstanceId id = s_.begin_complex();
+    for (std::string_view empty : {"BOUNDED_CURVE"}) {
+      s_.record(empty);
+      s_.end_record();
+    }
+    s_.record("B_SPLINE_CURVE");
+    b_spline_curve();
+    s_.end_record();
+    s_.record("B_SPLINE_CURVE_WITH_KNOTS");
+    with_knots();
+    s_.end_record();
+    for (std::string_view empty : {"CURVE", "GEOMETRIC_REPRESENTATION_ITEM"}) {
+      s_.record(empty);
+      s_.end_record();
+    }
+    s_.record("RATIONAL_B_SPLINE_CURVE");
+    s_.open_list();
+    for (double w : b.weights) s_.real(w);
+    s_.close_list();
+    s_.end_record();
+    s_.record("REPRESENTATION_ITEM");
+    s_.end_record();
+    s_.end();
+    return id;
+  }
   InstanceId curve(const sn::CompositeCurve& c) {
     if (c.segments.size() == 1) {
       if (const auto* l = std::get_if<sn::Polyline>(&c.segments[0])) return polyline(*l);
@@ -316,7 +383,8 @@ class Cc1Writer {
     segments.clear();
     for (std::size_t i = 0; i < c.segments.size(); ++i) {
       const InstanceId parent = std::visit(Overload{[&](const sn::Polyline& l) { return polyline(l); },
-                                                    [&](const sn::TrimmedCircle& t) { return trimmed_circle(t); }},
+                                                    [&](const sn::TrimmedCircle& t) { return trimmed_circle(t); },
+                                                    [&](const sn::BSplineCurve& b) { return bspline(b); }},
                                            c.segments[i]);
       s_.begin("COMPOSITE_CURVE_SEGMENT");
       s_.enumeration(i + 1 == c.segments.size() ? "DISCONTINUOUS" : "CONTINUOUS");

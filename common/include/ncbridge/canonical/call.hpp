@@ -22,6 +22,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace ncbridge::canonical {
 
@@ -97,6 +98,19 @@ struct ArcFeed {
   double a, b, c, u, v, w;
 };
 struct StraightFeed { Pose end; };
+// A NURBS curve in the XY plane at the current Z (LinuxCNC NURBS_FEED, made by G5 cubic
+// splines, G5.1 quadratic B-splines and G5.2/G5.3 NURBS): control points with weights, the
+// first one the current position; `order` is the degree + 1. Its knot vector is implicit, the
+// clamped uniform one of LinuxCNC (knot_vector_creator): `order` zeros, 1, 2, ..., n - order + 1,
+// then `order` times n - order + 2, for control points 0..n.
+struct NurbsControlPoint {
+  double x, y, weight;
+  friend bool operator==(const NurbsControlPoint&, const NurbsControlPoint&) = default;
+};
+struct NurbsFeed {
+  std::vector<NurbsControlPoint> control_points;
+  int order;
+};
 struct StraightProbe { Pose end; };
 struct RigidTap { Pose end; double scale; };
 struct Dwell { double seconds; };
@@ -169,7 +183,7 @@ using Data = std::variant<
     EnableAdaptiveFeed, DisableAdaptiveFeed, EnableFeedHold, DisableFeedHold,
     OptionalProgramStop, ProgramStop, ProgramEnd, PalletShuttle, OnReset,
     // appended later; new alternatives go at the end so existing indices stay put
-    WaitSpindleOrientComplete, Finish, SetToolTableEntry>;
+    WaitSpindleOrientComplete, Finish, SetToolTableEntry, NurbsFeed>;
 
 struct Call {
   Data data;
