@@ -37,6 +37,7 @@ int g_group(int g) {
 int m_group(int m) {
   switch (m) {
     case 0: case 1: case 2: case 30: case 60: return kMStop;
+    case 66: return kMInput;
     case 6: case 61: return kMToolChange;
     case 3: case 4: case 5: case 19: case 70: case 71: case 72: case 73: return kMSpindle;
     case 7: case 8: case 9: return kMCoolant;
@@ -62,6 +63,7 @@ void BlockCommand::reset() {
   has_polar_radius = has_polar_angle = false;
   comment = {};
   comment_is_message = false;
+  comment_action = CommentAction::Comment;
 }
 
 void assemble_command(const Block& block, const double* values, const std::string& file, BlockCommand& out) {

@@ -75,6 +75,7 @@ class Executor final : public ComputedParameters {
   void do_retract_mode(int g);
   void do_overrides(const BlockCommand& b);
   void do_coolant(const BlockCommand& b);
+  void do_wait_on_input(const BlockCommand& b);
   void do_cutter_comp(const BlockCommand& b, int g);
   double comp_radius_of_tool(const BlockCommand& b, int g);
 
@@ -122,6 +123,9 @@ class Executor final : public ComputedParameters {
   void spline(const BlockCommand& b, int motion);
   void nurbs_point(const BlockCommand& b);
   void nurbs_end(const BlockCommand& b);
+
+  // probing.cpp
+  void probe(const BlockCommand& b, int motion);
 
   // canned_cycles.cpp
   void canned_cycle(const BlockCommand& b, int motion);

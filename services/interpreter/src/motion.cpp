@@ -166,6 +166,12 @@ void Executor::do_motion(const BlockCommand& b, int motion, bool g53) {
     case 52:
       nurbs_point(b);
       return;
+    case 382:
+    case 383:
+    case 384:
+    case 385:
+      probe(b, motion);
+      return;
     default:
       if (is_canned_cycle(motion)) {
         canned_cycle(b, motion);

@@ -111,7 +111,13 @@ struct NurbsFeed {
   std::vector<NurbsControlPoint> control_points;
   int order;
 };
-struct StraightProbe { Pose end; };
+// G38.2-G38.5. probe_type, as LinuxCNC passes it: bit 0 set = no error when the move ends
+// without the probe changing state (G38.3, G38.5), bit 1 set = move until the probe loses
+// contact instead of until it touches (G38.4, G38.5).
+struct StraightProbe {
+  Pose end;
+  std::uint8_t probe_type = 0;
+};
 struct RigidTap { Pose end; double scale; };
 struct Dwell { double seconds; };
 
@@ -160,6 +166,18 @@ struct DisableAdaptiveFeed {};
 struct EnableFeedHold {};
 struct DisableFeedHold {};
 
+// Probing and operator output. TURN_PROBE_ON/OFF frame each STRAIGHT_PROBE. LOGOPEN/LOGAPPEND
+// open (truncating or appending) the file a program's LOG lines are written to, LOGCLOSE closes
+// it. PRINT is no NIST canonical function: LinuxCNC writes its text to the interpreter's standard
+// output, and `ncbridge canon` prints it there, as a line of its own, as rs274 does.
+struct TurnProbeOn {};
+struct TurnProbeOff {};
+struct LogOpen { std::string path; };
+struct LogAppend { std::string path; };
+struct LogClose {};
+struct Log { std::string text; };
+struct Print { std::string text; };
+
 // ---- Program
 struct OptionalProgramStop {};
 struct ProgramStop {};
@@ -183,7 +201,8 @@ using Data = std::variant<
     EnableAdaptiveFeed, DisableAdaptiveFeed, EnableFeedHold, DisableFeedHold,
     OptionalProgramStop, ProgramStop, ProgramEnd, PalletShuttle, OnReset,
     // appended later; new alternatives go at the end so existing indices stay put
-    WaitSpindleOrientComplete, Finish, SetToolTableEntry, NurbsFeed>;
+    WaitSpindleOrientComplete, Finish, SetToolTableEntry, NurbsFeed,
+    TurnProbeOn, TurnProbeOff, LogOpen, LogAppend, LogClose, Log, Print>;
 
 struct Call {
   Data data;
