@@ -173,6 +173,13 @@ std::string html_report(const HtmlReportInput& in) {
       for (const auto& t : r->its_toolpath->its_list) paths.push_back({points_of(t.basiccurve), true, legend.size()});
       continue;
     }
+    if (const auto* probing = std::get_if<sn::WorkpieceProbing>(&e)) {  // the probe's travel, as a rapid
+      const auto& s = probing->start_position.location;
+      const auto& d = probing->its_direction;
+      const double travel = probing->expected_value.theoretical_size + probing->expected_value.upper_limit;
+      paths.push_back({{s, {s.x + d.x * travel, s.y + d.y * travel, s.z + d.z * travel}}, true, legend.size()});
+      continue;
+    }
     const auto& ws = std::get<sn::MachiningWorkingstep>(e);
     const auto& op = sn::machining_operation(project.operation(ws.its_operation));
     if (op.its_toolpath) {

@@ -220,5 +220,52 @@ TEST(Cc1File, SplinesAreBSplineCurvesThatReadBack) {
   EXPECT_NE(text.find("=(BOUNDED_CURVE()B_SPLINE_CURVE('',2,"), std::string::npos);  // the complex instance
 }
 
+// A program that probes the part (G38.2 down, G38.3 sideways), sets its work offset from the
+// result and cuts: the probing moves are WORKPIECE_PROBING workingsteps (touch probing, ISO
+// 14649-10), the G38.4 retract is left out with a warning naming its line, the cut converts.
+TEST(Cc1File, ProbingIsWorkpieceProbingAndTheCuttingAfterItConverts) {
+  const fs::path paper = kShared / "corpus/paper";
+  Options o;
+  o.tools = setup::read_tool_list(paper / "tools.json");
+  o.stock = setup::read_stock(paper / "stock.json");
+  interpreter::Options io;
+  io.tools = o.tools;
+  Cc1Builder builder(o);
+  interpreter::interpret_text(
+      "G21 G90 G17\nT1 M6\nG0 X10 Y10 Z20\nG38.2 Z-10 F100\nG10 L20 P1 Z0\nG38.4 Z5\n"
+      "G0 X-10 Y50 Z-2\nG38.3 X20\nG0 Z20\n"
+      "S1000 M3\nG0 X0 Y0\nG1 Z-1 F300\nX50\nY50\nG0 Z20\nM2\n",
+      "probing.ngc", io, builder);
+  const std::vector<Warning> warnings = builder.warnings();
+  const stepnc::Project project = builder.take_project();
+  // The offset set from the probe comes after the first motion: the cut is converted into the
+  // setup's frame, and said so.
+  ASSERT_EQ(warnings.size(), 2u);
+  const bool frame_first = warnings[0].message.find("work offset changed") != std::string::npos;
+  const Warning& away = warnings[frame_first ? 1 : 0];
+  EXPECT_EQ(away.where.line, 6u);
+  EXPECT_NE(away.message.find("G38.4"), std::string::npos);
+  EXPECT_NE(warnings[frame_first ? 0 : 1].message.find("work offset changed"), std::string::npos);
+  const std::string text = cc1_text(project);
+  EXPECT_EQ(check(text, "probing.stp").size(), 0u) << joined(check(text, "probing.stp"));
+  const auto back = step_writer::read_stepnc(text, "probing.stp");
+  EXPECT_TRUE(back.warnings.empty());
+  EXPECT_EQ(cc1_text(back.project), text);
+  std::vector<stepnc::WorkpieceProbing> probings;
+  int workingsteps = 0;
+  for (const auto& e : back.project.main_workplan.its_elements) {
+    if (const auto* w = std::get_if<stepnc::WorkpieceProbing>(&e)) probings.push_back(*w);
+    if (std::holds_alternative<stepnc::MachiningWorkingstep>(e)) ++workingsteps;
+  }
+  ASSERT_EQ(probings.size(), 2u);
+  EXPECT_EQ(workingsteps, 1);
+  EXPECT_EQ(probings[0].its_direction, (stepnc::Direction{0, 0, -1}));
+  EXPECT_DOUBLE_EQ(probings[0].expected_value.theoretical_size, 15);
+  EXPECT_EQ(probings[0].measured_offset.its_name, "#5063");
+  EXPECT_EQ(probings[0].its_probe, "T1");
+  EXPECT_EQ(probings[1].its_direction, (stepnc::Direction{1, 0, 0}));
+  EXPECT_NE(text.find("TOUCH_PROBE('T1')"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace ncbridge::cc1_builder::testing

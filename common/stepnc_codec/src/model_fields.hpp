@@ -22,7 +22,7 @@ namespace ncbridge::stepnc_codec::detail {
 
 using namespace ncbridge::stepnc;
 
-constexpr std::uint32_t kVersion = 3;  // 2: REGION carries its projection; 3: B-spline curve segments
+constexpr std::uint32_t kVersion = 3;  // 2: REGION carries its projection; 3: B-splines, workpiece probing
 
 // S is T, possibly const: the same fields() serves encoding (const) and decoding.
 template <class S, class T>
@@ -172,6 +172,11 @@ template <class Ar, Is<MachiningWorkingstep> S> void fields(Ar& ar, S& v) {
   ar(v.its_id, v.its_secplane, v.its_feature, v.its_operation, v.source);
 }
 template <class Ar, Is<RapidMovement> S> void fields(Ar& ar, S& v) { ar(v.its_id, v.its_secplane, v.its_toolpath, v.source); }
+template <class Ar, Is<NcVariable> S> void fields(Ar& ar, S& v) { ar(v.its_name, v.initial_value); }
+template <class Ar, Is<WorkpieceProbing> S> void fields(Ar& ar, S& v) {
+  ar(v.its_id, v.its_secplane, v.measured_offset, v.start_position, v.its_direction, v.expected_value, v.its_probe,
+     v.source);
+}
 template <class Ar, Is<Workplan> S> void fields(Ar& ar, S& v) { ar(v.its_id, v.its_elements); }
 template <class Ar, Is<Workpiece> S> void fields(Ar& ar, S& v) {
   ar(v.its_id, v.global_tolerance, v.its_bounding_geometry, v.clamping_positions);

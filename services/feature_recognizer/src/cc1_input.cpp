@@ -115,6 +115,22 @@ std::vector<ToolpathWorkingstep> workingsteps_from_cc1(const stepnc::Project& cc
       }
       continue;
     }
+    if (const auto* probing = std::get_if<stepnc::WorkpieceProbing>(&element)) {
+      // Not machining: the tool goes to the probe's start and then along its travel.
+      const auto& s = probing->start_position.location;
+      const auto& d = probing->its_direction;
+      const double travel = probing->expected_value.theoretical_size + probing->expected_value.upper_limit;
+      if (pending_rapids.empty()) pending_start = at;
+      for (const Point3& q : {point(s), Point3{s.x + d.x * travel, s.y + d.y * travel, s.z + d.z * travel}}) {
+        if (q == at) continue;
+        Move m;
+        m.kind = MoveKind::Rapid;
+        m.end = q;
+        pending_rapids.push_back(m);
+        at = q;
+      }
+      continue;
+    }
     const auto& step = std::get<stepnc::MachiningWorkingstep>(element);
     const auto& op = cc1.operation(step.its_operation);
     const auto& mop = stepnc::machining_operation(op);

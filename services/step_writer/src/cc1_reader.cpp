@@ -664,8 +664,22 @@ class Cc1Reader {
       r.its_secplane = plane(reference(i, 1), i);
       if (!attr(i, 2).is_unset()) r.its_toolpath = toolpath_list(reference(i, 2), i);
       result_.project.main_workplan.its_elements.emplace_back(std::move(r));
+    } else if (i.entity() == "WORKPIECE_PROBING") {
+      sn::WorkpieceProbing w;
+      w.its_id = text(i, 0);
+      w.its_secplane = plane(reference(i, 1), i);
+      if (!attr(i, 2).is_unset()) warn(i, "the toolpath of a workpiece probing is not kept");
+      const Instance& variable = expect(reference(i, 4), {"NC_VARIABLE"}, i);
+      w.measured_offset.its_name = text(variable, 0);
+      w.measured_offset.initial_value = opt_number(variable, 1);
+      w.start_position = placement(reference(i, 5), i);
+      expect(reference(i, 6), {"WORKPIECE"}, i);  // the project's workpiece
+      w.its_direction = direction(reference(i, 7), i);
+      w.expected_value = toleranced(reference(i, 8), i);
+      w.its_probe = text(expect(reference(i, 9), {"TOUCH_PROBE"}, i), 0);
+      result_.project.main_workplan.its_elements.emplace_back(std::move(w));
     } else {
-      warn(i, "executable " + i.entity() + " is not read (only workingsteps and rapid movements)");
+      warn(i, "executable " + i.entity() + " is not read (only workingsteps, rapid movements and workpiece probings)");
     }
   }
 

@@ -781,6 +781,35 @@ class Cc1Writer {
     return s_.end();
   }
 
+  InstanceId write_executable(const sn::WorkpieceProbing& w) {
+    const InstanceId secplane = security_plane(w.its_secplane);
+    s_.begin("NC_VARIABLE");
+    s_.string(w.measured_offset.its_name);
+    s_.opt_real(w.measured_offset.initial_value);
+    const InstanceId variable = s_.end();
+    const InstanceId start = placement(w.start_position, "PROBING START");
+    const InstanceId direction_id = direction(w.its_direction);
+    const InstanceId expected = toleranced(w.expected_value);
+    InstanceId& probe = touch_probes_[w.its_probe];
+    if (probe == 0) {
+      s_.begin("TOUCH_PROBE");
+      s_.string(w.its_probe);
+      probe = s_.end();
+    }
+    s_.begin("WORKPIECE_PROBING");
+    s_.string(w.its_id);
+    s_.ref(secplane);
+    s_.unset();  // its_toolpath: the probing move is described by the attributes below
+    s_.unset();  // its_tool_direction
+    s_.ref(variable);
+    s_.ref(start);
+    s_.ref(workpiece_);
+    s_.ref(direction_id);
+    s_.ref(expected);
+    s_.ref(probe);
+    return s_.end();
+  }
+
   InstanceId write_workpiece(const sn::Workpiece& w, InstanceId rawpiece) {
     InstanceId bounding = 0;
     if (w.its_bounding_geometry) {
@@ -848,6 +877,7 @@ class Cc1Writer {
   part21::RecentInstances<2> circles_{10};
   // Scratch lists, one per level of nesting (curve <- toolpath list <- operation <- feature).
   std::vector<InstanceId> polyline_points_, segment_ids_, trajectory_ids_, feature_operation_ids_;
+  std::unordered_map<std::string, InstanceId> touch_probes_;  // TOUCH_PROBE by its_id (few in a program)
 };
 
 std::string header_text(const StepncWriteOptions& options) {
