@@ -1,0 +1,85 @@
+// Probing in the controller dialects, through the library API: Fanuc G31 skip, Mach3 G31 probe,
+// SINUMERIK MEAS=/MEAW= measuring, Heidenhain TCH PROBE 0 (reference plane). Each is a probe
+// move (STRAIGHT_PROBE, LinuxCNC's G38.3 or G38.5); what a construct cannot be read as is a
+// located "not supported: probing cycle ..." error. (The moves around them are checked against
+// rs274 by the single-construct programs in <dialect>/.)
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "ncbridge/common/error.hpp"
+#include "ncbridge/interpreter/interpreter.hpp"
+
+namespace {
+
+using ncbridge::InputError;
+using ncbridge::canonical::Call;
+using ncbridge::interpreter::Dialect;
+
+struct Collect final : ncbridge::canonical::Sink {
+  void call(const Call& c) override { calls.push_back(c); }
+  std::vector<Call> calls;
+  std::vector<ncbridge::canonical::StraightProbe> probes() const {
+    std::vector<ncbridge::canonical::StraightProbe> out;
+    for (const auto& c : calls) {
+      if (const auto* p = std::get_if<ncbridge::canonical::StraightProbe>(&c.data)) out.push_back(*p);
+    }
+    return out;
+  }
+  std::vector<ncbridge::canonical::Pose> traverses() const {
+    std::vector<ncbridge::canonical::Pose> out;
+    for (const auto& c : calls) {
+      if (const auto* t = std::get_if<ncbridge::canonical::StraightTraverse>(&c.data)) out.push_back(t->end);
+    }
+    return out;
+  }
+};
+
+Collect run(const std::string& text, Dialect dialect) {
+  ncbridge::interpreter::Options options;
+  options.dialect = dialect;
+  Collect sink;
+  ncbridge::interpreter::interpret_text(text, "probe.prog", options, sink);
+  return sink;
+}
+
+InputError error_of(const std::string& text, Dialect dialect) {
+  try {
+    run(text, dialect);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for:\n" << text;
+  return InputError({}, "");
+}
+
+TEST(FanucSkip, G31IsAProbeMoveThatStopsWithoutAlarmAndIsOneShot) {
+  const auto out = run("G21 G90 G17\nG0 X10. Y10. Z20.\nG31 Z-5. F100.\nX20.\nM30\n", Dialect::Fanuc);
+  const auto probes = out.probes();
+  ASSERT_EQ(probes.size(), 1u);
+  EXPECT_EQ(probes[0].probe_type, 1);  // G38.3: no error without contact
+  EXPECT_DOUBLE_EQ(probes[0].end.z, -5);
+  const auto rapids = out.traverses();
+  ASSERT_EQ(rapids.size(), 2u);  // X20. moves in G0 again
+  EXPECT_DOUBLE_EQ(rapids[1].x, 20);
+}
+
+TEST(FanucSkip, MultiStepSkipIsReportedWhereItIs) {
+  const InputError e = error_of("G21 G90\nG0 X0 Y0 Z10.\nG31 P2 Z-5. F100.\nM30\n", Dialect::Fanuc);
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_EQ(e.where().column, 5u);
+  EXPECT_NE(std::string(e.what()).find("not supported"), std::string::npos) << e.what();
+}
+
+TEST(Mach3Probe, TripPointComesBackInParameters2000To2002) {
+  const auto out = run("G21 G90\nG0 X1 Y2 Z20\nG31 Z-7 F100\nG0 X[#2000 + 10] Y#2001 Z[#2002 + 3]\nM30\n", Dialect::Mach3);
+  ASSERT_EQ(out.probes().size(), 1u);
+  const auto rapids = out.traverses();
+  ASSERT_EQ(rapids.size(), 2u);
+  EXPECT_DOUBLE_EQ(rapids[1].x, 11);
+  EXPECT_DOUBLE_EQ(rapids[1].y, 2);
+  EXPECT_DOUBLE_EQ(rapids[1].z, -4);
+}
+
+}  // namespace
