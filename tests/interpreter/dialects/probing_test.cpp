@@ -82,4 +82,30 @@ TEST(Mach3Probe, TripPointComesBackInParameters2000To2002) {
   EXPECT_DOUBLE_EQ(rapids[1].z, -4);
 }
 
+TEST(SinumerikMeasuring, MeasAndMeawAreProbeMovesReadBackThroughAaMw) {
+  const auto out = run("G17 G71 G90\nG0 X5 Y5 Z20\nMEAS=1 G1 Z-10 F100\nR1=$AA_MW[Z] R2=$AC_MEA[1] R3=$AC_MEA[2]\n"
+                       "G0 Z=R1+R2*10+R3*100\nMEAW=-2 X30\nG0 X=$AA_MW[X]+$AC_MEA[2]\nM30\n",
+                       Dialect::Siemens840D);
+  const auto probes = out.probes();
+  ASSERT_EQ(probes.size(), 2u);
+  EXPECT_EQ(probes[0].probe_type, 1);  // rising edge: G38.3
+  EXPECT_EQ(probes[1].probe_type, 3);  // falling edge: G38.5
+  const auto rapids = out.traverses();
+  ASSERT_EQ(rapids.size(), 3u);
+  EXPECT_DOUBLE_EQ(rapids[1].z, 0);   // -10 + 1 * 10 + 0 * 100: probe 2 not triggered yet
+  EXPECT_DOUBLE_EQ(rapids[2].x, 31);  // 30 + 1
+}
+
+TEST(SinumerikMeasuring, ErrorsAreLocated) {
+  const InputError circle = error_of("G17 G71 G90\nG0 X0 Y0 Z5\nMEAS=1 G2 X10 Y0 CR=5 F100\nM30\n", Dialect::Siemens840D);
+  EXPECT_EQ(circle.where().line, 3u);
+  EXPECT_EQ(circle.where().column, 1u);
+  EXPECT_NE(std::string(circle.what()).find("not supported: measuring"), std::string::npos) << circle.what();
+  const InputError probe = error_of("G17 G71 G90\nG0 X0 Y0 Z5\nG1 F100 MEAW=3 Z0\nM30\n", Dialect::Siemens840D);
+  EXPECT_EQ(probe.where().column, 9u);
+  const InputError axis = error_of("G17 G71 G90\nR1=$AA_MW[Q]\nM30\n", Dialect::Siemens840D);
+  EXPECT_EQ(axis.where().line, 2u);
+  EXPECT_NE(std::string(axis.what()).find("X, Y, Z"), std::string::npos) << axis.what();
+}
+
 }  // namespace
