@@ -108,4 +108,32 @@ TEST(SinumerikMeasuring, ErrorsAreLocated) {
   EXPECT_NE(std::string(axis.what()).find("X, Y, Z"), std::string::npos) << axis.what();
 }
 
+TEST(HeidenhainTouchProbe, ReferencePlaneProbesFromThePrePositionAndSavesTheResult) {
+  const auto out = run("0 BEGIN PGM P MM\n1 L Z+50 R0 FMAX\n2 TCH PROBE 0.0 REF. PLANE Q7 Y+\n"
+                       "3 TCH PROBE 0.1 X+5 Y-30 Z-2\n4 L Y+Q7 FMAX\n5 END PGM P MM\n",
+                       Dialect::Heidenhain);
+  const auto probes = out.probes();
+  ASSERT_EQ(probes.size(), 1u);
+  EXPECT_EQ(probes[0].probe_type, 1);
+  EXPECT_DOUBLE_EQ(probes[0].end.y, -10);  // 20 mm (the table's measuring range) in +Y
+  const auto rapids = out.traverses();
+  ASSERT_EQ(rapids.size(), 4u);  // Z+50, to the pre-position, back to it, Y+Q7
+  EXPECT_DOUBLE_EQ(rapids[2].y, -30);
+  EXPECT_DOUBLE_EQ(rapids[3].y, -10);
+}
+
+TEST(HeidenhainTouchProbe, OtherProbingCyclesAreReportedWhereTheyAre) {
+  const InputError e = error_of("0 BEGIN PGM P MM\n1 TCH PROBE 410 NULLPUNKT RECHTECK INNEN\n2 END PGM P MM\n",
+                                Dialect::Heidenhain);
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 13u);
+  EXPECT_NE(std::string(e.what()).find("not supported: probing cycle 410"), std::string::npos) << e.what();
+  const InputError polar = error_of("0 BEGIN PGM P MM\n1 TCH PROBE 1.0 POLAR DATUM PLANE\n2 END PGM P MM\n",
+                                    Dialect::Heidenhain);
+  EXPECT_NE(std::string(polar.what()).find("probing cycle 1 "), std::string::npos) << polar.what();
+  const InputError alone = error_of("0 BEGIN PGM P MM\n1 TCH PROBE 0.1 X+0 Y+0 Z+0\n2 END PGM P MM\n",
+                                    Dialect::Heidenhain);
+  EXPECT_NE(std::string(alone.what()).find("without its TCH PROBE 0.0"), std::string::npos) << alone.what();
+}
+
 }  // namespace

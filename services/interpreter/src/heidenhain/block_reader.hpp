@@ -25,7 +25,7 @@ struct HWord {
 
 enum class Kind {
   Empty, Comment, BeginPgm, EndPgm, BlkForm, ToolCall, ToolDef, CyclDef, CyclCall, Label, CallLabel, CallPgm,
-  Assign, FnJump, Stop, Path
+  Assign, FnJump, Stop, Path, TchProbe
 };
 
 struct HBlock {
@@ -144,6 +144,16 @@ class Reader {
       out.keyword = std::string(s_.substr(start, pos_ - start));
       out.text = up(s_.substr(pos_));
       out.column = static_cast<std::uint32_t>(start + 1);
+    } else if (keyword("TCH PROBE")) {  // touch probe cycles: number and text as CYCL DEF
+      out.kind = Kind::TchProbe;
+      skip();
+      std::size_t start = pos_;
+      while (pos_ < s_.size() && (lowering::is_digit(s_[pos_]) || s_[pos_] == '.')) ++pos_;
+      if (start == pos_) fail(start, "TCH PROBE needs a cycle number");
+      out.keyword = std::string(s_.substr(start, pos_ - start));
+      out.text = up(s_.substr(pos_));
+      out.column = static_cast<std::uint32_t>(start + 1);
+      if (out.keyword == "0.1") words(out);  // cycle 0's pre-position: X+5 Y+0 Z-5
     } else if (keyword("CYCL CALL")) {
       out.kind = Kind::CyclCall;
       skip();
