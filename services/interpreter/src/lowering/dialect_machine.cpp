@@ -28,8 +28,9 @@ void DialectMachine::at(std::uint32_t file, const std::string& file_name, std::u
   executor_.set_source(source_);
 }
 
+// Every error names a line and a column: an empty file's (or one before any block) is line 1.
 void DialectMachine::fail(std::uint32_t column, const std::string& message) const {
-  throw InputError({*file_name_, line_, column}, message);
+  throw InputError({*file_name_, line_ == 0 ? 1 : line_, column == 0 ? 1 : column}, message);
 }
 
 bool DialectMachine::execute(const NeutralBlock& nb) {
