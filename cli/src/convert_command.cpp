@@ -141,7 +141,9 @@ class ElementWriter final : public cc1_builder::WorkplanSink {
 };
 
 std::string_view kind_of(const stepnc::Executable& e) {
-  return std::holds_alternative<stepnc::RapidMovement>(e) ? "RAPID_MOVEMENT" : "MACHINING_WORKINGSTEP";
+  if (std::holds_alternative<stepnc::RapidMovement>(e)) return "RAPID_MOVEMENT";
+  if (std::holds_alternative<stepnc::WorkpieceProbing>(e)) return "WORKPIECE_PROBING";
+  return "MACHINING_WORKINGSTEP";
 }
 
 nlohmann::ordered_json report_of(const ConvertArguments& args, const std::string& program, const stepnc::Project& p,

@@ -104,6 +104,7 @@ class Runner {
   // lowering helpers
   std::optional<double> axis_target(char letter, const std::map<char, Value>& w, const Point3& here) const;
   void lower_motion(NeutralBlock& nb, const std::map<char, Value>& w);
+  void copy_skip_position();
   void lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w);
   void spell_boring(NeutralBlock& nb, Point3 hole, double dx, double dy, double r_abs, double z_abs, int repeats,
                     std::uint32_t col);
@@ -431,7 +432,7 @@ bool Runner::run_block() {
 
   // G codes through the dictionary
   cycle_column_ = 0;
-  enum class Special { None, Dwell, Rotation, Local, Macro, DataSetting, Home, Machine, SetOrigin };
+  enum class Special { None, Dwell, Rotation, Local, Macro, DataSetting, Home, Machine, SetOrigin, Skip };
   Special special = Special::None;
   bool rotation_on = false;
   std::uint32_t cancel_column = 0;
@@ -478,6 +479,8 @@ bool Runner::run_block() {
     } else if (meta == "data_setting") {
       special = Special::DataSetting;
       nb.g(10, g.column);
+    } else if (meta == "skip") {
+      special = Special::Skip;
     } else if (meta == "exact_stop_block") {
       // G9: exact stop for this block; the canonical model has no per-block stop
     } else if (e->rs274) {
@@ -588,6 +591,19 @@ bool Runner::run_block() {
       m_.put_axes(nb, axis_target('x', w, here), axis_target('y', w, here), axis_target('z', w, here), gs.front().column);
       break;
     }
+    case Special::Skip: {
+      // G31 (Fanuc skip function, Mach3 probe): a straight move that stops where the skip (probe)
+      // signal comes, without an alarm when it does not: LinuxCNC's G38.3. One-shot: the motion
+      // mode stays. The skip position is read as the end point (no machine here).
+      const std::uint32_t col = gs.front().column;
+      Point3 here = m_.position();
+      const auto x = axis_target('x', w, here), y = axis_target('y', w, here), z = axis_target('z', w, here);
+      if (!x && !y && !z) m_.fail(col, "G31 needs an X, Y or Z end point");
+      if (w.count('p')) m_.fail(w.at('p').column, "not supported: multi-step skip (G31 P)");
+      nb.g(38.3, col);
+      m_.put_axes(nb, x, y, z, col);
+      break;
+    }
     case Special::Macro:
       break;
     case Special::None:
@@ -597,6 +613,7 @@ bool Runner::run_block() {
 
   bool ended = m_.execute(nb);
   if (ended) return false;
+  if (special == Special::Skip) copy_skip_position();
 
   if (special == Special::Macro) {
     std::uint32_t col = gs.front().column;
@@ -633,6 +650,17 @@ bool Runner::run_block() {
     return return_from_program(sequence, ret->column);
   }
   return true;
+}
+
+// The skip position: Fanuc keeps it in #5061.. as LinuxCNC does (the executor sets them); a
+// dialect whose probe writes elsewhere names the first variable in its table (Mach3: #2000-#2005,
+// X Y Z A B C).
+void Runner::copy_skip_position() {
+  const double first = table_.setting("probe_result_variable", 5061);
+  if (first == 5061) return;
+  for (int i = 0; i < 6; ++i) {
+    m_.parameters().set_numbered(static_cast<int>(first) + i, m_.parameters().numbered(5061 + i));
+  }
 }
 
 std::optional<double> Runner::axis_target(char letter, const std::map<char, Value>& w, const Point3& here) const {

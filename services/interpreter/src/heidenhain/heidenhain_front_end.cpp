@@ -75,6 +75,7 @@ class Runner {
   void sysread(const HBlock& b);
   bool path(const HBlock& b, std::size_t index);
   void cycle_def(const HBlock& b);
+  bool touch_probe(const HBlock& b);
   void cycle_call(std::uint32_t column);
   void bore_milling(std::map<std::string, double>& v, double r, double bottom, double clearance, std::uint32_t column);
   void split_m(const HBlock& b, NeutralBlock& before, NeutralBlock& after);
@@ -107,6 +108,9 @@ class Runner {
   void call_program(const HBlock& b);
 
   double feed_ = 0;              // the last programmed F (control units)
+  std::string probe_result_;     // TCH PROBE 0.0: the result's Q parameter (its key), axis, direction
+  int probe_axis_ = 2;
+  double probe_direction_ = -1;
   double pole_x_ = 0, pole_y_ = 0;
   bool have_pole_ = false;
   Point3 tangent_{1, 0, 0};      // direction at the end of the last path element
@@ -334,6 +338,8 @@ bool Runner::step() {
     case Kind::CyclDef:
       cycle_def(b);
       return true;
+    case Kind::TchProbe:
+      return touch_probe(b);
     case Kind::CyclCall: {
       NeutralBlock before, after;
       split_m(b, before, after);
@@ -994,6 +1000,67 @@ void Runner::cycle_def(const HBlock& b) {
   if (!lowering::read_decimal(text, p, v)) m_.fail(b.column, "CYCL DEF " + sub + " has no value");
   cycle_values_[role->second] = v;
   defined_since_cycle_def_.insert(sub);
+}
+
+// TCH PROBE 0 REFERENCE PLANE (0.0: result parameter and probing axis with direction, "Q5 X-";
+// 0.1: the pre-position): rapid to the pre-position, probe along the axis at the probing feed
+// (LinuxCNC's G38.3) up to the probe's measuring range, save the touched coordinate in the Q
+// parameter, return to the pre-position. The probe is taken to touch at the end of its range
+// (there is no machine here). Range and feed are the machine's (MP6130, MP6120): table settings.
+// Other probing cycles are a located "not supported: probing cycle N".
+bool Runner::touch_probe(const HBlock& b) {
+  const std::string& number = b.keyword;
+  const std::string cycle = number.substr(0, number.find('.'));
+  if (cycle != "0") m_.fail(b.column, "not supported: probing cycle " + cycle + " (TCH PROBE " + number + ")");
+  const std::string& text = b.text;
+  if (number == "0" || number == "0.0") {
+    std::size_t q = text.find('Q');
+    while (q != std::string::npos && (q + 1 >= text.size() || !lowering::is_digit(text[q + 1]))) q = text.find('Q', q + 1);
+    std::size_t digits = q == std::string::npos ? q : q + 1;
+    while (digits != std::string::npos && digits < text.size() && lowering::is_digit(text[digits])) ++digits;
+    if (q == std::string::npos || digits == q + 1) m_.fail(b.column, "TCH PROBE 0.0 needs the Q parameter for its result");
+    std::size_t p = digits;
+    while (p < text.size() && text[p] == ' ') ++p;
+    if (p + 1 >= text.size() || (text[p] != 'X' && text[p] != 'Y' && text[p] != 'Z') || (text[p + 1] != '+' && text[p + 1] != '-')) {
+      m_.fail(b.column, "TCH PROBE 0.0 needs the probing axis and direction after the Q parameter (X-, Z+, ...)");
+    }
+    probe_result_ = "_q" + text.substr(q + 1, digits - q - 1);
+    probe_axis_ = text[p] - 'X';
+    probe_direction_ = text[p + 1] == '+' ? 1.0 : -1.0;
+    return true;
+  }
+  if (number != "0.1") m_.fail(b.column, "TCH PROBE " + number + " is not a line of probing cycle 0");
+  if (probe_result_.empty()) m_.fail(b.column, "TCH PROBE 0.1 without its TCH PROBE 0.0");
+  std::optional<double> pre[3];
+  for (const HWord& w : b.words) {
+    if (w.value == kNoExpr) continue;
+    const int axis = w.name == "X" ? 0 : w.name == "Y" ? 1 : w.name == "Z" ? 2 : -1;
+    if (axis < 0) m_.fail(w.column, "TCH PROBE 0.1 takes the pre-position X, Y, Z");
+    pre[axis] = eval(b, w);
+  }
+  const bool inch = m_.state().units == canonical::Units::Inches;
+  const double range = table_.setting("touch_probe_measuring_range_mm", 20.0) / (inch ? 25.4 : 1.0);
+  const double probing_feed = table_.setting("touch_probe_feed_mm_per_min", 100.0) / (inch ? 25.4 : 1.0);
+  NeutralBlock nb;
+  nb.g(0, b.column);
+  m_.put_axes(nb, pre[0], pre[1], pre[2], b.column);
+  if (m_.execute(nb)) return false;
+  const Point3 start = m_.position();
+  Point3 end = start;
+  (probe_axis_ == 0 ? end.x : probe_axis_ == 1 ? end.y : end.z) += probe_direction_ * range;
+  nb.clear();
+  nb.g(38.3, b.column);
+  nb.add('f', probing_feed, b.column);
+  m_.put_axes(nb, end.x, end.y, end.z, b.column);
+  if (m_.execute(nb)) return false;
+  m_.parameters().set_named(probe_result_, probe_axis_ == 0 ? end.x : probe_axis_ == 1 ? end.y : end.z);
+  nb.clear();
+  nb.g(0, b.column);
+  m_.put_axes(nb, start.x, start.y, start.z, b.column);
+  const double f = feed(feed_);
+  if (f > 0) nb.add('f', f, b.column);  // the program's feed again
+  probe_result_.clear();
+  return !m_.execute(nb);
 }
 
 // Cycle 208 BORE MILLING: from the hole centre at the set-up clearance, out to the bore circle,

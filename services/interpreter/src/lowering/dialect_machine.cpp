@@ -29,6 +29,7 @@ void DialectMachine::at(std::uint32_t file, const std::string& file_name, std::u
   executor_.set_source(source_);
 }
 
+// Every error names a line and a column: an empty file's (or one before any block) is line 1.
 void DialectMachine::fail(std::uint32_t column, const std::string& message) const {
   throw InputError(locate(*file_name_, line_, column, segments_), message);
 }
