@@ -26,6 +26,7 @@ struct CanonArguments {
   std::string dialect = "rs274ngc";
   std::string heidenhain_feed_units = "mm/min";
   bool strict = false;
+  std::vector<int> machine_functions;
 };
 
 std::vector<std::filesystem::path> split_path(const std::string& text) {
@@ -66,6 +67,7 @@ int run_canon(const CanonArguments& args) {
   }
   if (args.heidenhain_feed_units == "mm/s") options.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
   options.strict = args.strict;
+  options.machine_functions = args.machine_functions;
   options.warning = [](const SourceLocation& where, const std::string& message) {
     std::fprintf(stderr, "%s: warning: %s\n", where.to_string().c_str(), message.c_str());
   };
@@ -102,6 +104,10 @@ void add_canon_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"mm/min", "mm/s"}));
   cmd->add_flag("--strict", args->strict,
                 "Refuse what is otherwise read with a warning (machine builder M codes, G43 without tool lengths)");
+  cmd->add_option("--machine-functions", args->machine_functions,
+                  "M codes that are the machine builder's machine functions (no motion), beyond the dialect's list: "
+                  "read with a warning")
+      ->delimiter(',');
   cmd->callback([args, &exit_code]() { exit_code = run_canon(*args); });
 }
 

@@ -51,6 +51,7 @@ struct ConvertArguments {
   std::string subroutine_path;
   std::optional<double> security_plane;
   bool strict = false;
+  std::vector<int> machine_functions;
 };
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
@@ -220,6 +221,7 @@ interpreter::Options interpreter_options(const ConvertArguments& args, const set
                                          std::vector<cc1_builder::Warning>& warnings) {
   interpreter::Options interp;
   interp.strict = args.strict;
+  interp.machine_functions = args.machine_functions;
   interp.warning = [&warnings](const SourceLocation& where, const std::string& message) {
     warnings.push_back({where, message});
   };
@@ -404,6 +406,10 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
   cmd->add_flag("--strict", args->strict,
                 "Refuse what is otherwise read with a warning (machine builder M codes, G43 without tool lengths)");
+  cmd->add_option("--machine-functions", args->machine_functions,
+                  "M codes that are the machine builder's machine functions (no motion), beyond the dialect's list: "
+                  "read with a warning")
+      ->delimiter(',');
   cmd->callback([args, &exit_code]() { exit_code = run_convert(*args); });
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <optional>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -268,6 +269,67 @@ TEST(Siemens840D, UnknownCallsAndTiltedFramesAreLocated) {
   EXPECT_EQ(e.where().line, 2u);
   EXPECT_EQ(e.where().column, 5u);
   EXPECT_NE(e.message().find("angle head"), std::string::npos) << e.message();
+}
+
+}  // namespace
+
+namespace {
+
+// ---- Fanuc custom macro B and machine functions
+
+TEST(FanucMacroB, VacantVariablesFollowTheNullRules) {
+  // #1 is vacant: copying keeps it vacant, arithmetic gives 0, EQ/NE tell it from 0, LT reads 0,
+  // an address with it is left out
+  const Collect c = run("G21 G90\nG0 X1. Y1. Z1.\n#2=#1\n#3=#1+#1\n"
+                        "IF [#2 EQ #0] THEN #10=1.\nIF [#3 EQ #0] THEN #11=1.\nIF [#1 EQ 0] THEN #12=1.\n"
+                        "IF [#1 LT 1.] THEN #13=1.\nIF [#3 EQ 0] THEN #14=1.\n"
+                        "G0 X[#10+#11*10.+#12*100.] Y[#13+#14*10.] Z#2\nM30\n",
+                        options_for(Dialect::Fanuc));
+  ASSERT_EQ(c.ends().size(), 2u);
+  EXPECT_TRUE(near(c.ends()[1], 1, 11, 1));
+  // #0 cannot be assigned
+  EXPECT_EQ(error_of("G21\n#0=1.\nM30\n", options_for(Dialect::Fanuc)).where().line, 2u);
+}
+
+TEST(FanucMacroB, G65ArgumentListTwoTakesRepeatedIJK) {
+  const Collect c = run("G21 G90\nG65 P9001 A2. I1. J2. I3. K4. I5.\nM30\nO9001\nG0 X#4 Y#5 Z#6\nG0 X#7 Y#8 Z#9\n"
+                        "G0 X#10 Y[#1] Z[#11+#2]\nM99\n",
+                        options_for(Dialect::Fanuc));
+  ASSERT_EQ(c.ends().size(), 3u);
+  EXPECT_TRUE(near(c.ends()[0], 1, 2, 0));   // I1 J1; K1 vacant: Z left out
+  EXPECT_TRUE(near(c.ends()[1], 3, 2, 4));   // I2 (J2 vacant) K2
+  EXPECT_TRUE(near(c.ends()[2], 5, 2, 0));   // I3; #2 (B) vacant reads 0
+}
+
+TEST(FanucMacroB, WorkOffsetSettingAndTheExternalOffset) {
+  const Collect c = run("G21 G90\nG10 L2 P2 X10. Y20.\nG91 G10 L2 P2 X5.\nG90 G55 G0 X0 Y0\nM30\n",
+                        options_for(Dialect::Fanuc));
+  std::optional<canonical::SetG5xOffset> g55;  // the last of G55's (M30 then selects G54)
+  for (const auto& o : c.all<canonical::SetG5xOffset>()) {
+    if (o.index == 2) g55 = o;
+  }
+  ASSERT_TRUE(g55.has_value());
+  EXPECT_NEAR(g55->offset.x, 15.0, 1e-9);  // G91: 10 + 5
+  EXPECT_NEAR(g55->offset.y, 20.0, 1e-9);
+  const InputError e = error_of("G21\nG10 L2 P0 X5.\nM30\n", options_for(Dialect::Fanuc));
+  EXPECT_EQ(e.where().line, 2u);
+  EXPECT_EQ(e.where().column, 11u);
+  EXPECT_NE(e.message().find("external work offset"), std::string::npos) << e.message();
+}
+
+TEST(FanucMacroB, MachineFunctionsWarnAndStrictRefuses) {
+  Warnings w;
+  Options o = options_for(Dialect::Fanuc, &w);
+  o.machine_functions = {444};
+  const Collect c = run("G21\nM10\nG0 X1.\nM444\nM30\n", o);
+  ASSERT_EQ(w.list.size(), 2u);
+  EXPECT_EQ(w.list[0].first.line, 2u);
+  EXPECT_NE(w.list[0].second.find("M10 (rotary axis clamp)"), std::string::npos) << w.list[0].second;
+  EXPECT_EQ(w.list[1].first.line, 4u);
+  o.strict = true;
+  EXPECT_EQ(error_of("G21\nM10\nM30\n", o).where().line, 2u);
+  // an M code no list names stays an error
+  EXPECT_EQ(error_of("G21\nM445\nM30\n", options_for(Dialect::Fanuc)).where().line, 2u);
 }
 
 }  // namespace

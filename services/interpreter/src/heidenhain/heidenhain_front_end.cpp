@@ -459,7 +459,10 @@ void Runner::split_m(const HBlock& b, NeutralBlock& before, NeutralBlock& after)
     if (w.name != "M" || w.value == kNoExpr) continue;
     double code = eval(b, w.value);
     const lowering::CodeEntry* e = table_.m(code);
-    if (e == nullptr) m_.fail(w.column, "M" + lowering::code_key(code) + " is not a Heidenhain M function ncbridge supports");
+    if (e == nullptr) {
+      if (m_.machine_function(code, w.column)) continue;
+      m_.fail(w.column, "M" + lowering::code_key(code) + " is not a Heidenhain M function ncbridge supports");
+    }
     if (e->meta == "spindle_cw_coolant" || e->meta == "spindle_ccw_coolant") {
       before.m(e->meta == "spindle_cw_coolant" ? 3 : 4, w.column);
       before.m(8, w.column);
