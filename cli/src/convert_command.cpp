@@ -221,6 +221,9 @@ interpreter::Options interpreter_options(const ConvertArguments& args, const set
                                          std::vector<cc1_builder::Warning>& warnings) {
   interpreter::Options interp;
   interp.strict = args.strict;
+  // a program that ends without M2/M30 (or %, END PGM) runs to its last block on the control:
+  // converted, with a warning (refused under --strict)
+  interp.require_program_end = false;
   interp.machine_functions = args.machine_functions;
   interp.warning = [&warnings](const SourceLocation& where, const std::string& message) {
     warnings.push_back({where, message});

@@ -200,6 +200,7 @@ bool Runner::step() {
     m_.at(static_cast<std::uint32_t>(file_), f.text.name, static_cast<std::uint32_t>(f.text.size()));
     if (!calls_.empty()) m_.fail(1, "Subprogram ended without M99");
     if (options_.require_program_end) m_.fail(1, "File ended with no program end (M30/M2) or closing '%'");
+    m_.warn(1, "File ended with no program end (M30/M2) or closing '%': the program ends here");
     return false;
   }
   if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");

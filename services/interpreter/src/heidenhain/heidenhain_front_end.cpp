@@ -285,6 +285,7 @@ bool Runner::step() {
       return true;
     }
     if (options_.require_program_end) m_.fail(1, "File ended without END PGM");
+    m_.warn(1, "File ended without END PGM: the program ends here");
     return false;
   }
   if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");

@@ -166,6 +166,7 @@ bool Runner::step() {
                        open.kind + " without its " + end);
     }
     if (options_.require_program_end) m_.fail(1, "File ended with no program end (M30/M2)");
+    m_.warn(1, "File ended with no program end (M30/M2): the program ends here");
     return false;
   }
   if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
