@@ -56,7 +56,7 @@ int run_canon(const CanonArguments& args) {
   interpreter::parse_dialect_name(args.dialect, options.dialect);
   if (options.dialect == interpreter::Dialect::Auto) {
     try {
-      const auto detected = interpreter::detect_dialect_file(args.program);
+      const auto detected = interpreter::detect_dialect_reading(args.program, options);
       options.dialect = detected.dialect;
       std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
                    std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());

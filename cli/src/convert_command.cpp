@@ -229,17 +229,17 @@ interpreter::Options interpreter_options(const ConvertArguments& args, const set
     warnings.push_back({where, message});
   };
   interp.dialect = dialect_of(args.dialect);
-  if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
-    const auto detected = interpreter::detect_dialect_file(args.program);
-    interp.dialect = detected.dialect;
-    std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
-                 std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
-  }
   if (args.heidenhain_feed_units == "mm/s") interp.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
   interp.tools = tools;
   std::stringstream dirs(args.subroutine_path);
   for (std::string d; std::getline(dirs, d, ':');) {
     if (!d.empty()) interp.subroutine_path.emplace_back(d);
+  }
+  if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
+    const auto detected = interpreter::detect_dialect_reading(args.program, interp);
+    interp.dialect = detected.dialect;
+    std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
+                 std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
   }
   return interp;
 }

@@ -42,4 +42,5 @@ list(APPEND NCBRIDGE_INTERPRETER_SOURCES
   src/siemens840d/siemens_front_end.cpp
   src/siemens840d/pocket_milling.cpp
   src/dialect_detect/dialect_detect.cpp
+  src/dialect_detect/trial_reading.cpp
 )
