@@ -15,6 +15,7 @@
 #include "expression.hpp"
 #include "heidenhain/block_reader.hpp"
 #include "heidenhain/corner_rounding.hpp"
+#include "heidenhain/pocket_cycles.hpp"
 #include "lowering/dialect_machine.hpp"
 #include "lowering/dialect_table.hpp"
 #include "lowering/infix_expression.hpp"
@@ -637,8 +638,10 @@ bool Runner::path(const HBlock& b, std::size_t index) {
       }
       continue;
     }
+    // an address without a value (old TNC output: "L X+32,000 R F5000 M") changes nothing
+    if (w.value == kNoExpr && (n == "R" || n == "M" || n == "F")) continue;
     if (w.value == kNoExpr) {
-      if (n == "R" || n == "X" || n == "Y" || n == "Z") m_.fail(w.column, n + " has no value");
+      if (n == "X" || n == "Y" || n == "Z") m_.fail(w.column, n + " has no value");
       m_.fail(w.column, "Unknown word " + n);
     }
     double v = eval(b, w.value);
@@ -984,6 +987,17 @@ void Runner::cycle_def(const HBlock& b) {
   if (!lowering::read_decimal(text, p, v)) m_.fail(b.column, "CYCL DEF " + sub + " has no value");
   cycle_values_[role->second] = v;
   defined_since_cycle_def_.insert(sub);
+  // old pocket cycles add words to a line: "5.3 PECKG -1.5 F50" (the plunging feed), "5.5 F50 DR-"
+  // (the milling feed and the direction)
+  if (role->second == "plunge_depth") {
+    const std::size_t f = text.find(" F", p);
+    double feed = 0;
+    std::size_t q = f == std::string::npos ? f : f + 2;
+    if (q != std::string::npos && lowering::read_decimal(text, q, feed)) cycle_values_["plunge_feed"] = feed;
+  }
+  if (const std::size_t dr = text.find("DR"); dr != std::string::npos && dr + 2 < text.size()) {
+    cycle_values_["direction"] = text[dr + 2] == '-' ? -1.0 : 1.0;
+  }
 }
 
 // Cycle 208 BORE MILLING: from the hole centre at the set-up clearance, out to the bore circle,
@@ -1043,11 +1057,10 @@ void Runner::cycle_call(std::uint32_t column) {
     }
   }
   std::map<std::string, double> v = cycle_values_;
-  if (cycle_ != "1") {
-    for (const auto& [q, role] : entry.roles) {
-      std::string name = "_q" + q.substr(1);
-      v[role] = m_.parameters().named(name).value_or(0.0);
-    }
+  for (const auto& [q, role] : entry.roles) {
+    if (q.empty() || q[0] != 'Q') continue;  // old cycles are defined by numbered lines, not Q parameters
+    std::string name = "_q" + q.substr(1);
+    v[role] = m_.parameters().named(name).value_or(0.0);
   }
   auto get = [&](const char* role) -> double {
     auto it = v.find(role);
@@ -1059,6 +1072,26 @@ void Runner::cycle_call(std::uint32_t column) {
   double r, bottom, clearance;
   int code = 81;
   double peck = 0, dwell = 0, feed_rate = 0;
+  if (cycle_ == "5") {
+    // CIRCULAR POCKET: the tool is at the pocket centre, at the set-up clearance
+    const setup::Tool* tool = options_.tools.find(m_.state().tool_in_spindle);
+    if (tool == nullptr) m_.fail(column, "Cycle 5 needs the tool's diameter: the tool is not in the tool list");
+    CircularPocket p;
+    p.cx = here.x;
+    p.cy = here.y;
+    p.start_z = here.z;
+    p.surface_z = here.z - std::fabs(get("setup_clearance"));
+    p.bottom_z = p.surface_z - std::fabs(get("depth"));
+    p.plunge = std::fabs(get("plunge_depth"));
+    p.plunge_feed = feed(v.count("plunge_feed") ? v["plunge_feed"] : feed_);
+    p.radius = std::fabs(get("radius"));
+    p.feed = feed(get("milling_feed"));
+    p.clockwise = v.count("direction") && v["direction"] < 0;
+    p.tool_radius = tool->diameter / m_.state().mm_per_unit() / 2.0;
+    p.overlap = table_.setting("pocket_overlap_factor", 1.0);
+    circular_pocket(m_, p, column);
+    return;
+  }
   if (cycle_ == "1") {
     double setup = get("setup_clearance"), depth = get("depth");
     // the tool starts at the set-up clearance above the surface; the cycle works towards -Z
