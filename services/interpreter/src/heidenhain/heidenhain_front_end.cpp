@@ -528,7 +528,19 @@ bool Runner::tool_call(const HBlock& b) {
       nb.add('z', t->length / m_.state().mm_per_unit() + delta_length, b.column);
     }
   }
-  return !m_.execute(nb);
+  if (m_.execute(nb)) return false;
+  // the system Q parameters a TOOL CALL sets, from the tool list: Q108 the active tool radius
+  // (with DR), Q114 its length (with DL), Q109 the tool axis (0 X, 1 Y, 2 Z), Q113 the unit
+  if (const setup::Tool* t = options_.tools.find(tool)) {
+    double delta_radius = 0;
+    if (const HWord* dr = find(b, "DR"); dr && dr->value != kNoExpr) delta_radius = eval(b, dr->value);
+    const double k = m_.state().mm_per_unit();
+    m_.parameters().set_named("_q108", t->diameter / k / 2.0 + delta_radius);
+    m_.parameters().set_named("_q114", t->length / k + delta_length);
+  }
+  m_.parameters().set_named("_q109", b.text == "X" ? 0.0 : b.text == "Y" ? 1.0 : 2.0);
+  m_.parameters().set_named("_q113", m_.state().units == canonical::Units::Inches ? 1.0 : 0.0);
+  return true;
 }
 
 // FN 18 SYSREAD, for the system data an offline reading knows: ID10 NR1 (unit), ID20 (NR1
