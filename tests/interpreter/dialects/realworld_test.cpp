@@ -35,7 +35,6 @@ struct RealProgram {
 
 // BOTTLE.NC writes arc centres as absolute coordinates: a Fanuc control stops there too (alarm
 // PS0020). 123.mpf turns the working plane for an angle head (ROT Y-90): not three-axis milling.
-// SLII001 and VESELYparametr are built on the SL contour cycles, not read yet.
 const std::vector<RealProgram> kPrograms = {
     {"fanuc/BOTTLE.NC", "fanuc", "12:23", "Radius to end of arc differs from radius to start"},
     {"fanuc/FANUC0M.nc", "fanuc", "", ""},
@@ -43,8 +42,8 @@ const std::vector<RealProgram> kPrograms = {
     {"fanuc/PROGRAM2.NC", "fanuc", "", ""},
     {"heidenhain/668.klartext", "heidenhain", "", ""},
     {"heidenhain/Krivka.klartext", "heidenhain", "", ""},
-    {"heidenhain/SLII001.klartext", "heidenhain", "6:13", "CYCL DEF 14"},
-    {"heidenhain/VESELYparametr.klartext", "heidenhain", "38:13", "CYCL DEF 14"},
+    {"heidenhain/SLII001.klartext", "heidenhain", "", ""},
+    {"heidenhain/VESELYparametr.klartext", "heidenhain", "", ""},
     {"heidenhain/programm-zirkularnut-fraesen.klartext", "heidenhain", "", ""},
     {"mach3/bear.nc", "mach3", "", ""},
     {"mach3/botomata_bottom.nc", "mach3", "", ""},
