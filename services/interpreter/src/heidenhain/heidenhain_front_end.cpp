@@ -76,6 +76,7 @@ class Runner {
   bool tool_call(const HBlock& b);
   void sysread(const HBlock& b);
   bool path(const HBlock& b, std::size_t index);
+  bool approach_or_depart(const HBlock& b, std::size_t index);
   void cycle_def(const HBlock& b);
   void cycle_call(std::uint32_t column);
   // SL cycles: the contours of the labels cycle 14 names, as their blocks draw them
@@ -631,8 +632,187 @@ void Runner::plan_chamfer(const HBlock& chf, std::size_t index, const Point3& st
   corner_.t2 = {corner.x + vx * size, corner.y + vy * size, corner.z};
 }
 
+// APPR/DEP: approaching the contour's first point PA and leaving its last point PE, as the TNC
+// manual describes them. LT: on a straight line, tangential to the first (last) element, from
+// (to) an auxiliary point LEN away along it; LN: perpendicular to it, LEN away on the tool's
+// side; CT: on an arc of radius R and angle CCA tangential to it, its centre on the tool's side
+// (R < 0: the other side); LCT: on a straight line tangential to such an arc that joins the
+// element tangentially at PA (PE), the line from the start point (to the end point X Y). APPR
+// switches the radius compensation it names on with its first move (the compensation's entry
+// move, as R0 -> RL/RR), DEP switches it off with its last.
+bool Runner::approach_or_depart(const HBlock& b, std::size_t index) {
+  const bool approach = b.keyword == "APPR";
+  std::string form;
+  std::optional<double> x, y, z, len, cca, radius;
+  int comp = m_.state().comp_side == canonical::Side::Left ? 41 : m_.state().comp_side == canonical::Side::Right ? 42 : 40;
+  bool rapid = false;
+  const Point3 here = m_.position();
+  for (const HWord& w : b.words) {
+    const std::string& n = w.name;
+    if (n == "LT" || n == "LN" || n == "CT" || n == "LCT") { form = n; continue; }
+    if (n == "RL") { comp = 41; continue; }
+    if (n == "RR") { comp = 42; continue; }
+    if (n == "FMAX") { rapid = true; continue; }
+    if (n == "M") continue;
+    if (w.value == kNoExpr) {
+      if (n == "F" || n == "R") continue;
+      m_.fail(w.column, n + " has no value");
+    }
+    const double v = eval(b, w.value);
+    if (n == "X") x = v; else if (n == "Y") y = v; else if (n == "Z") z = v;
+    else if (n == "IX") x = here.x + v; else if (n == "IY") y = here.y + v; else if (n == "IZ") z = here.z + v;
+    else if (n == "LEN") len = v;
+    else if (n == "CCA") cca = v;
+    else if (n == "R") {
+      if (v == 0) comp = 40; else radius = v;
+    }
+    else if (n == "F") feed_ = v;
+    else m_.fail(w.column, "Word " + n + " is not supported in " + b.keyword + " " + form);
+  }
+  (void)rapid;  // the approach and departure run at the feed (the TNC's first move to PH aside)
+  if (form.empty()) m_.fail(b.column, b.keyword + " needs LT, LN, CT or LCT");
+  if ((form == "LT" || form == "LN") && (!len || *len <= 0)) m_.fail(b.column, b.keyword + " " + form + " needs LEN > 0");
+  if ((form == "CT" || form == "LCT") && (!radius || *radius == 0)) m_.fail(b.column, b.keyword + " " + form + " needs R");
+  if (form == "CT" && (!cca || *cca <= 0 || *cca >= 360)) m_.fail(b.column, b.keyword + " CT needs CCA between 0 and 360");
+  if (comp == 40 && approach) m_.fail(b.column, "APPR needs the radius compensation RL or RR");
+  const bool left = comp == 41;
+  NeutralBlock before, after;
+  split_m(b, before, after);
+  Point3 contour{}, tangent{};  // the contour point and the element's direction there
+  if (approach) {
+    if (!x || !y) m_.fail(b.column, "APPR needs the first contour point X and Y");
+    contour = {*x, *y, z.value_or(here.z)};
+    // the first contour element: the next path block
+    std::size_t j = prog().pc;
+    HBlock next;
+    while (j < prog().text.size()) {
+      const std::size_t lines = read_block(j, next);
+      if (next.kind != Kind::Empty && next.kind != Kind::Comment) break;
+      j += lines;
+    }
+    std::optional<Point3> pole;
+    if (next.kind == Kind::Path && next.keyword == "CC") {
+      Point3 c{pole_x_, pole_y_, 0};
+      for (const HWord& w : next.words) {
+        if (w.value == kNoExpr) continue;
+        const double v = eval(next, w.value);
+        if (w.name == "X") c.x = v; else if (w.name == "Y") c.y = v;
+        else if (w.name == "IX") c.x = contour.x + v; else if (w.name == "IY") c.y = contour.y + v;
+      }
+      pole = c;
+      j += read_block(j, next);
+      while (j < prog().text.size() && (next.kind == Kind::Empty || next.kind == Kind::Comment)) j += read_block(j, next);
+    }
+    if (j >= prog().text.size() || next.kind != Kind::Path) fail_at(index, b.column, "APPR must be followed by the first contour element");
+    const ContourElement e = next_element(next, j, contour, index, b.column, pole);
+    if (e.arc) {
+      const double rx = contour.x - e.cx, ry = contour.y - e.cy, l = std::hypot(rx, ry);
+      tangent = e.cw ? Point3{ry / l, -rx / l, 0} : Point3{-ry / l, rx / l, 0};
+    } else {
+      const double dx = e.end.x - contour.x, dy = e.end.y - contour.y, l = std::hypot(dx, dy);
+      if (l < 1e-9) fail_at(index, b.column, "APPR: the first contour element has no length");
+      tangent = {dx / l, dy / l, 0};
+    }
+  } else {
+    if (!have_tangent_) m_.fail(b.column, "DEP needs a contour element before it");
+    contour = here;
+    tangent = tangent_;
+  }
+  // the normal towards the tool's side (RL: left of the direction of travel)
+  const Point3 side = left ? Point3{-tangent.y, tangent.x, 0} : Point3{tangent.y, -tangent.x, 0};
+  NeutralBlock nb = approach ? before : NeutralBlock{};
+  auto move_line = [&](const Point3& to, bool first) {
+    if (first && approach && comp != 40) nb.g(comp, b.column);
+    add_feed(nb, b.column);
+    nb.g(1, b.column);
+    m_.put_axes(nb, to.x, to.y, std::nullopt, b.column);
+    if (m_.execute(nb)) m_.fail(b.column, b.keyword + " ended the program");
+    nb.clear();
+  };
+  auto move_arc = [&](const Point3& to, const Point3& centre, bool cw, bool first) {
+    if (first && approach && comp != 40) nb.g(comp, b.column);
+    add_feed(nb, b.column);
+    m_.put_xy_arc(nb, cw, to.x, to.y, std::nullopt, centre.x, centre.y, b.column);
+    if (m_.execute(nb)) m_.fail(b.column, b.keyword + " ended the program");
+    nb.clear();
+  };
+  const double sign = radius && *radius < 0 ? -1.0 : 1.0;
+  const double r = radius ? std::fabs(*radius) : 0.0;
+  // an arc whose centre lies on the tool's side (R > 0) turns towards it: counter-clockwise for RL
+  const bool arc_cw = (sign > 0) ? !left : left;
+  const Point3 centre{contour.x + sign * side.x * r, contour.y + sign * side.y * r, 0};
+  auto rotate_about = [&](const Point3& p, double degrees) {
+    const double a = degrees * kDeg, c = std::cos(a), s2 = std::sin(a);
+    const double dx = p.x - centre.x, dy = p.y - centre.y;
+    return Point3{centre.x + c * dx - s2 * dy, centre.y + s2 * dx + c * dy, 0};
+  };
+  // the point where a line from (to) `p` touches the arc's circle, on the side the arc runs
+  auto touching = [&](const Point3& p, bool incoming) -> Point3 {
+    const double dx = p.x - centre.x, dy = p.y - centre.y, d = std::hypot(dx, dy);
+    if (d <= r + 1e-9) m_.fail(b.column, b.keyword + " LCT: the point is inside the arc's circle");
+    const double base = std::atan2(dy, dx), off = std::acos(r / d);
+    // the tangent point at which the arc's direction of travel points away from (towards) p
+    for (double sgn : {1.0, -1.0}) {
+      const double a = base + sgn * off;
+      const Point3 t{centre.x + r * std::cos(a), centre.y + r * std::sin(a), 0};
+      const Point3 dir = arc_cw ? Point3{std::sin(a), -std::cos(a), 0} : Point3{-std::sin(a), std::cos(a), 0};
+      const double along = (t.x - p.x) * dir.x + (t.y - p.y) * dir.y;
+      if ((incoming && along > 0) || (!incoming && along < 0)) return t;
+    }
+    m_.fail(b.column, b.keyword + " LCT: no tangent from the point to the arc");
+  };
+  if (approach) {
+    if (form == "LT" || form == "LN") {
+      const Point3 aux = form == "LT" ? Point3{contour.x - tangent.x * *len, contour.y - tangent.y * *len, 0}
+                                      : Point3{contour.x + side.x * *len, contour.y + side.y * *len, 0};
+      move_line(aux, true);
+      move_line(contour, false);
+    } else if (form == "CT") {
+      const Point3 start = rotate_about(contour, arc_cw ? *cca : -*cca);
+      move_line(start, true);
+      move_arc(contour, centre, arc_cw, false);
+    } else {
+      const Point3 start = touching(here, true);
+      move_line(start, true);
+      move_arc(contour, centre, arc_cw, false);
+    }
+    have_tangent_ = true;
+    tangent_ = tangent;
+  } else {
+    Point3 end{};
+    if (form == "LT" || form == "LN") {
+      end = form == "LT" ? Point3{contour.x + tangent.x * *len, contour.y + tangent.y * *len, 0}
+                         : Point3{contour.x + side.x * *len, contour.y + side.y * *len, 0};
+      nb.g(40, b.column);
+      move_line(end, false);
+    } else if (form == "CT") {
+      end = rotate_about(contour, arc_cw ? -*cca : *cca);
+      move_arc(end, centre, arc_cw, false);
+      // the compensation ends here: the next move leaves the contour
+      nb.g(40, b.column);
+      if (m_.execute(nb)) return false;
+      nb.clear();
+    } else {
+      if (!x || !y) m_.fail(b.column, "DEP LCT needs the end point X and Y");
+      const Point3 target{*x, *y, 0};
+      const Point3 leave = touching(target, false);
+      move_arc(leave, centre, arc_cw, false);
+      nb.g(40, b.column);
+      move_line(target, false);
+    }
+    if (z) {
+      nb.g(1, b.column);
+      m_.put_axes(nb, std::nullopt, std::nullopt, *z, b.column);
+      if (m_.execute(nb)) return false;
+      nb.clear();
+    }
+  }
+  return !m_.execute(after);
+}
+
 bool Runner::path(const HBlock& b, std::size_t index) {
   const std::string& k = b.keyword;
+  if (k == "APPR" || k == "DEP") return approach_or_depart(b, index);
   Point3 here = m_.position();
   std::optional<double> x, y, z;
   bool rapid = false, cw = false, dr = false;
