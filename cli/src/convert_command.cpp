@@ -58,6 +58,7 @@ struct ConvertArguments {
   std::string subroutine_path;
   std::optional<double> security_plane;
   bool strict = false;
+  std::vector<int> machine_functions;
 };
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
@@ -246,6 +247,10 @@ interpreter::Options interpreter_options(const ConvertArguments& args, const Con
   const Input& program = run.program;
   interpreter::Options interp;
   interp.strict = args.strict;
+  // a program that ends without M2/M30 (or %, END PGM) runs to its last block on the control:
+  // converted, with a warning (refused under --strict)
+  interp.require_program_end = false;
+  interp.machine_functions = args.machine_functions;
   interp.warning = [&warnings](const SourceLocation& where, const std::string& message) {
     Warning w;
     w.kind = "reading";
@@ -254,17 +259,17 @@ interpreter::Options interpreter_options(const ConvertArguments& args, const Con
     warnings.push_back(std::move(w));
   };
   interp.dialect = dialect_of(args.dialect);
-  if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
-    const auto detected = program.text ? interpreter::detect_dialect(*program.text)
-                                       : interpreter::detect_dialect_file(program.path);
-    interp.dialect = detected.dialect;
-    run.feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " + detected.reason + ")");
-  }
   if (args.heidenhain_feed_units == "mm/s") interp.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
   interp.tools = tools;
   std::stringstream dirs(args.subroutine_path);
   for (std::string d; std::getline(dirs, d, ':');) {
     if (!d.empty()) interp.subroutine_path.emplace_back(d);
+  }
+  if (interp.dialect == interpreter::Dialect::Auto) {  // detect (the reading that takes the whole program), and say which
+    const auto detected = program.text ? interpreter::detect_dialect_reading(*program.text, program.name, interp)
+                                       : interpreter::detect_dialect_reading(program.path, interp);
+    interp.dialect = detected.dialect;
+    run.feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " + detected.reason + ")");
   }
   return interp;
 }
@@ -559,6 +564,10 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--strict", args->strict,
                 "A warning is an error: exit 1, nothing written (the interpreter refuses machine builder M codes, G43 "
                 "without tool lengths at their place)");
+  cmd->add_option("--machine-functions", args->machine_functions,
+                  "M codes that are the machine builder's machine functions (no motion), beyond the dialect's list: "
+                  "read with a warning")
+      ->delimiter(',');
   cmd->callback([args, cmd, &exit_code]() { exit_code = run_convert(*args, verbosity_of(*cmd)); });
 }
 

@@ -211,7 +211,7 @@ class Reader {
       out.kind = Kind::Functions;
       words(out);
     } else {
-      static constexpr std::string_view kPaths[] = {"RND", "CHF", "CC", "CR", "CT", "CP", "LP", "L", "C"};
+      static constexpr std::string_view kPaths[] = {"APPR", "DEP", "RND", "CHF", "CC", "CR", "CT", "CP", "LP", "L", "C"};
       for (std::string_view p : kPaths) {
         std::size_t save = pos_;
         if (keyword(p) && (pos_ >= s_.size() || s_[pos_] == ' ' || s_[pos_] == '\t')) {

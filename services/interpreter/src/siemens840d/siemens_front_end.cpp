@@ -170,6 +170,7 @@ bool Runner::step() {
                        open.kind + " without its " + end);
     }
     if (options_.require_program_end) m_.fail(1, "File ended with no program end (M30/M2)");
+    m_.warn(1, "File ended with no program end (M30/M2): the program ends here");
     return false;
   }
   if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
@@ -488,7 +489,10 @@ bool Runner::run_block(SBlock& b) {
   for (const Item* mi : ms) {
     double code = eval(b, mi->value);
     const lowering::CodeEntry* e = table_.m(code);
-    if (e == nullptr) m_.fail(mi->column, "M" + lowering::code_key(code) + " is not a SINUMERIK M code ncbridge supports");
+    if (e == nullptr) {
+      if (m_.machine_function(code, mi->column)) continue;
+      m_.fail(mi->column, "M" + lowering::code_key(code) + " is not a SINUMERIK M code ncbridge supports");
+    }
     if (e->meta == "subprogram_return") program_return = true;
     else if (e->rs274) nb.m(static_cast<int>(*e->rs274), mi->column);
   }
