@@ -165,6 +165,24 @@ Ring outer_ring(const Region& r) {
   return best;
 }
 
+// Groups by machining order, the latest first (their index order is not machining order:
+// nested step-downs split off are appended).
+void latest_first(std::vector<std::size_t>& indices, const std::vector<MillingGroup>& groups) {
+  std::stable_sort(indices.begin(), indices.end(),
+                   [&](std::size_t a, std::size_t b) { return groups[a].sequence > groups[b].sequence; });
+}
+
+// The ring (|outer| area minus |hole| area) by the shoelace formula, either orientation.
+double ring_area(const Ring& ring) {
+  double twice = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const auto& a = ring[i];
+    const auto& b = ring[(i + 1) % ring.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return std::abs(twice) / 2;
+}
+
 // A boss left standing: the largest area the group's cut surrounds without cutting it, when no
 // other group cuts into it either (so material stands there), and the cut does not go through
 // (a core inside a through cut falls out). Its outside profile is what the group machined.
@@ -174,39 +192,55 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
                                       const std::vector<Layer>& layers, const PartEnvelope& part, double tool_diameter) {
   const auto& group = groups[group_index];
   if (group.floor <= part.bottom_z + 1e-3) return std::nullopt;
-  std::optional<Region> island;
+  const Ring* island_ring = nullptr;
   double island_area = 0, ring_width = 0;
-  for (const auto& pwh : group.area.polygons()) {
+  const auto polygons = group.area.polygons();
+  for (const auto& pwh : polygons) {
     for (const auto& hole : pwh.holes) {
-      Region r = Region::polygon(hole);
-      const double a = r.area();
+      const double a = ring_area(hole);
       if (a <= island_area) continue;
-      const double ring_area = Region::polygon(pwh.outer).area() - a;
-      ring_width = ring_area / ((perimeter(pwh.outer) + perimeter(hole)) / 2);
-      island_area = a, island = std::move(r);
+      const double ring_area_around = ring_area(pwh.outer) - a;
+      ring_width = ring_area_around / ((perimeter(pwh.outer) + perimeter(hole)) / 2);
+      island_area = a, island_ring = &hole;
     }
   }
-  if (!island || island_area < 1.0 || ring_width > 1.5 * tool_diameter) return std::nullopt;
+  if (!island_ring || island_area < 1.0 || ring_width > 1.5 * tool_diameter) return std::nullopt;
+  const Region island = Region::polygon(*island_ring);
+  // Cuts above the group's highest level (a face over the boss) leave it standing; a cut into the
+  // island (of the latest kNearFeatureLimit near it) means no boss stands there.
+  double highest = group.floor;
+  for (auto i : group.layers()) highest = std::max(highest, layers[i].z);
+  const auto box = island.bbox();
+  std::vector<std::size_t> into;
+  for (auto g : part.groups_by_box.candidates(*box)) {
+    if (g == group_index || groups[g].floor > highest + 1e-3 || !boxes_overlap(box, groups[g].area.bbox())) continue;
+    into.push_back(g);
+  }
+  latest_first(into, groups);
+  if (into.size() > kNearFeatureLimit) into.resize(kNearFeatureLimit);
+  for (auto g : into) {
+    if (island.intersected(groups[g].area).area() > 0.05 * island.area()) return std::nullopt;
+  }
   // Around a boss the material is cleared too (or it is the part's edge); a ring cut into solid
   // material is a hole bored by circular interpolation, its core a chip.
   Region ring_fill;
-  for (const auto& pwh : group.area.polygons()) {
-    if (Region::polygon(pwh.outer).intersected(*island).area() > 0) ring_fill = Region::polygon(pwh.outer);
+  for (const auto& pwh : polygons) {
+    const Region outer = Region::polygon(pwh.outer);
+    if (outer.intersected(island).area() > 0) ring_fill = outer;
   }
   const Region outside = boundary_band(ring_fill, 0.25 * tool_diameter, 0.01).minus(ring_fill);
   Region cleared = outside.minus(part.outline);
-  for (std::size_t g = 0; g < groups.size(); ++g) {
-    if (g != group_index && boxes_overlap(outside.bbox(), groups[g].area.bbox())) cleared = cleared.united(outside.intersected(groups[g].area));
+  std::vector<std::size_t> around;
+  if (const auto outside_box = outside.bbox()) {
+    for (auto g : part.groups_by_box.candidates(*outside_box)) {
+      if (g != group_index && boxes_overlap(outside_box, groups[g].area.bbox())) around.push_back(g);
+    }
   }
+  latest_first(around, groups);
+  if (around.size() > kNearFeatureLimit) around.resize(kNearFeatureLimit);
+  std::sort(around.begin(), around.end());
+  for (auto g : around) cleared = cleared.united(outside.intersected(groups[g].area));
   if (cleared.area() < 0.5 * outside.area()) return std::nullopt;
-  // Cuts above the group's highest level (a face over the boss) leave it standing.
-  double highest = group.floor;
-  for (auto i : group.layers()) highest = std::max(highest, layers[i].z);
-  const auto box = island->bbox();
-  for (std::size_t g = 0; g < groups.size(); ++g) {
-    if (g == group_index || groups[g].floor > highest + 1e-3 || !boxes_overlap(box, groups[g].area.bbox())) continue;
-    if (island->intersected(groups[g].area).area() > 0.05 * island->area()) return std::nullopt;
-  }
   return island;
 }
 
@@ -214,18 +248,23 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
 // `floor` when the group is cut: earlier groups cutting to that floor or deeper have removed the
 // rest. A step runs along most of what stands there.
 // What earlier features near the group cut to its floor or deeper: air at its level.
+// The latest kNearFeatureLimit of them (bounded exact work).
 Region removed_before(const MillingGroup& group, const std::vector<MillingGroup>& groups, const PartEnvelope& part) {
-  Region removed;
   auto near = group.area.bbox();
-  if (!near) return removed;
+  if (!near) return Region();
   near->xmin -= 1, near->ymin -= 1, near->xmax += 1, near->ymax += 1;
+  std::vector<std::size_t> earlier;
   for (auto index : part.groups_by_box.candidates(*near)) {
     const auto& g = groups[index];
     if (g.sequence < group.sequence && g.floor <= group.floor + 1e-3 && boxes_overlap(near, g.area.bbox())) {
-      removed = removed.united(g.area);
+      earlier.push_back(index);
     }
   }
-  return removed;
+  latest_first(earlier, groups);
+  if (earlier.size() > kNearFeatureLimit) earlier.resize(kNearFeatureLimit);
+  std::vector<Region> areas;
+  for (auto index : earlier) areas.push_back(groups[index].area);
+  return Region::union_all(areas);
 }
 
 std::array<double, 4> standing_side_lengths(const Region& removed, const PartEnvelope& part) {

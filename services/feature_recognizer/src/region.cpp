@@ -331,6 +331,26 @@ Region Region::from_polygons(const std::vector<PolygonWithHoles>& polygons) {
   return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
 }
 
+Region Region::union_all(const std::vector<Region>& regions) {
+  std::vector<const Region*> parts;
+  for (const auto& r : regions) {
+    if (!r.empty()) parts.push_back(&r);
+  }
+  if (parts.empty()) return Region();
+  if (parts.size() == 1) return *parts.front();
+  if (parts.size() == 2) return parts[0]->united(*parts[1]);
+  // Each region winds once around its points (outer contours positive, holes negative), so the
+  // points where the sum of the windings is not zero are the union.
+  Paths paths;
+  for (const auto* r : parts) {
+    for (const auto& c : r->impl_->components) {
+      paths.push_back(c.outer);
+      paths.insert(paths.end(), c.holes.begin(), c.holes.end());
+    }
+  }
+  return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
+}
+
 bool Region::empty() const { return impl_->components.empty(); }
 
 // Regions whose boxes share no area share no area either: their intersection is empty and a

@@ -35,6 +35,9 @@ class Region {
   // Boundaries as polygons() gives them (outer rings and their holes, any orientation).
   static Region from_polygons(const std::vector<PolygonWithHoles>& polygons);
 
+  // The union of many regions in one sweep (chained unions would redo the growing result each time).
+  static Region union_all(const std::vector<Region>& regions);
+
   Region united(const Region& other) const;
   Region intersected(const Region& other) const;
   Region minus(const Region& other) const;
