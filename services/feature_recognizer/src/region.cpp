@@ -313,6 +313,17 @@ Region Region::union_of(const std::vector<Ring>& polygons) {
   return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
 }
 
+Region Region::from_winding(const std::vector<Ring>& curves) {
+  Paths paths;
+  paths.reserve(curves.size());
+  for (const auto& ring : curves) {
+    Path path = to_path(ring);
+    if (path.size() >= 3) paths.push_back(std::move(path));
+  }
+  if (paths.empty()) return Region();
+  return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
+}
+
 Region Region::from_polygons(const std::vector<PolygonWithHoles>& polygons) {
   Paths paths;
   for (const auto& pwh : polygons) {
