@@ -46,7 +46,8 @@ class Writer {
       while (written_ < until) tool_.drill ? drill() : walk(until);
       emit("G0 Z%.3f", kSafe);
     }
-    emit("G80 G0 Z%.3f", 2 * kSafe);
+    emit("G80");
+    emit("G0 Z%.3f", 2 * kSafe);
     emit("M5");
     emit("M30");
   }
@@ -79,14 +80,20 @@ class Writer {
     } else {
       emit("G83 X%.3f Y%.3f Z%.3f R2 Q%.3f F%d", x, y, -depth, random_.uniform(1, 5), 100 + 20 * random_.below(10));
     }
-    if (random_.below(8) == 0) emit("G80");
+    cycle_ = true;
+    if (random_.below(8) == 0) {
+      emit("G80");
+      cycle_ = false;
+    }
   }
 
   // A random walk at one depth (with some ramps and helices on the way), entered from above.
   void walk(long until) {
     x_ = random_.uniform(0, kWidth), y_ = random_.uniform(0, kHeight);
     z_ = -random_.uniform(0.2, tool_.diameter >= 40 ? 3 : 15);
-    emit("G80 G0 X%.3f Y%.3f Z%.3f", x_, y_, kSafe);
+    if (cycle_) emit("G80");
+    cycle_ = false;
+    emit("G0 X%.3f Y%.3f Z%.3f", x_, y_, kSafe);
     if (random_.below(3) == 0) {  // ramp in
       const double a = random_.uniform(0, 2 * std::numbers::pi), l = random_.uniform(5, 30);
       x_ = clamp_x(x_ + l * std::cos(a)), y_ = clamp_y(y_ + l * std::sin(a));
@@ -143,6 +150,7 @@ class Writer {
   std::string& out_;
   Tool tool_{};
   double x_ = 0, y_ = 0, z_ = 0;
+  bool cycle_ = false;  // a canned cycle is active (G80 cancels it before other motion)
 };
 
 }  // namespace

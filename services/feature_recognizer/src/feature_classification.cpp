@@ -244,39 +244,58 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
   return island;
 }
 
-// The length of each side of the part (x-, x+, y-, y+) where material still stands above
-// `floor` when the group is cut: earlier groups cutting to that floor or deeper have removed the
-// rest. A step runs along most of what stands there.
-// What earlier features near the group cut to its floor or deeper: air at its level.
-// The latest kNearFeatureLimit of them (bounded exact work).
-Region removed_before(const MillingGroup& group, const std::vector<MillingGroup>& groups, const PartEnvelope& part) {
-  auto near = group.area.bbox();
-  if (!near) return Region();
-  near->xmin -= 1, near->ymin -= 1, near->xmax += 1, near->ymax += 1;
-  std::vector<std::size_t> earlier;
-  for (auto index : part.groups_by_box.candidates(*near)) {
-    const auto& g = groups[index];
-    if (g.sequence < group.sequence && g.floor <= group.floor + 1e-3 && boxes_overlap(near, g.area.bbox())) {
-      earlier.push_back(index);
+// What earlier features near a group cut to its floor or deeper (air at its level): the latest
+// kNearFeatureLimit of them (bounded exact work). Kept as the features' areas, not their union:
+// the questions asked of it meet each area with something small (a band along an edge, a strip
+// along a side, a footprint), where uniting the areas first would resolve every crossing among
+// them.
+class RemovedBefore {
+ public:
+  RemovedBefore(const MillingGroup& group, const std::vector<MillingGroup>& groups, const PartEnvelope& part) {
+    auto near = group.area.bbox();
+    if (!near) return;
+    near->xmin -= 1, near->ymin -= 1, near->xmax += 1, near->ymax += 1;
+    std::vector<std::size_t> earlier;
+    for (auto index : part.groups_by_box.candidates(*near)) {
+      const auto& g = groups[index];
+      if (g.sequence < group.sequence && g.floor <= group.floor + 1e-3 && boxes_overlap(near, g.area.bbox())) {
+        earlier.push_back(index);
+      }
     }
+    latest_first(earlier, groups);
+    if (earlier.size() > kNearFeatureLimit) earlier.resize(kNearFeatureLimit);
+    std::sort(earlier.begin(), earlier.end());
+    for (auto index : earlier) areas_.push_back(groups[index].area);
   }
-  latest_first(earlier, groups);
-  if (earlier.size() > kNearFeatureLimit) earlier.resize(kNearFeatureLimit);
-  std::vector<Region> areas;
-  for (auto index : earlier) areas.push_back(groups[index].area);
-  return Region::union_all(areas);
-}
 
-std::array<double, 4> standing_side_lengths(const Region& removed, const PartEnvelope& part) {
+  bool empty() const { return areas_.empty(); }
+
+  // `region` less what was removed.
+  Region left_of(Region region) const {
+    for (const auto& a : areas_) region = region.minus(a);
+    return region;
+  }
+
+  // The part of `region` that was removed.
+  Region within(const Region& region) const {
+    std::vector<Region> parts;
+    for (const auto& a : areas_) parts.push_back(region.intersected(a));
+    return Region::union_all(parts);
+  }
+
+ private:
+  std::vector<Region> areas_;
+};
+
+// The length of a side of the part (0 to 3: x-, x+, y-, y+) where material still stands at the
+// group's floor: earlier groups cutting to that floor or deeper have removed the rest. A step
+// runs along most of what stands there.
+double standing_side_length(int side, const RemovedBefore& removed, const PartEnvelope& part) {
   constexpr double kStrip = 1.0;
   const Box2& e = part.box;
   const Box2 strips[4] = {{e.xmin, e.ymin, e.xmin + kStrip, e.ymax}, {e.xmax - kStrip, e.ymin, e.xmax, e.ymax},
                           {e.xmin, e.ymin, e.xmax, e.ymin + kStrip}, {e.xmin, e.ymax - kStrip, e.xmax, e.ymax}};
-  std::array<double, 4> out{};
-  for (int s = 0; s < 4; ++s) {
-    out[s] = Region::rectangle(strips[s]).intersected(part.outline).minus(removed).area() / kStrip;
-  }
-  return out;
+  return removed.left_of(Region::rectangle(strips[side]).intersected(part.outline)).area() / kStrip;
 }
 
 // The straight centre line of a slot whose area is the rectangle `rect`.
@@ -411,12 +430,13 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   auto contact = open_contact(group.area, part);
   // Open also where the cut's outer edge runs into what earlier features cleared deeper (an open
   // pocket on an upper level opening onto a step): a band just inside the edge, in that air.
-  const Region removed = removed_before(group, groups, part);
+  const RemovedBefore removed(group, groups, part);
   if (!removed.empty()) {
-    Region outer;
-    for (const auto& pwh : group.area.polygons()) outer = outer.united(Region::polygon(pwh.outer));
+    std::vector<Region> outers;
+    for (const auto& pwh : group.area.polygons()) outers.push_back(Region::polygon(pwh.outer));
+    const Region outer = Region::union_all(outers);
     const Region edge = boundary_band(outer, kOpenBandWidth, 0.01).intersected(outer);
-    for (const auto& piece : edge.intersected(removed).components()) {
+    for (const auto& piece : removed.within(edge).components()) {
       if (piece.area() >= 0.05 * kOpenBandWidth) contact.pieces.push_back(*piece.bbox());
     }
   }
@@ -454,7 +474,7 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   }
 
   f.open_sides = contact.sides;
-  const Region standing_footprint = removed.empty() ? footprint : footprint.minus(removed);
+  const Region standing_footprint = removed.left_of(footprint);
   const Point2 open_center = standing_footprint.area() > 0.05 * footprint.area() ? box_center(*standing_footprint.bbox()) : fcenter;
   f.x = open_center.x, f.y = open_center.y;
   f.profile.outline = outline;
@@ -463,9 +483,10 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   f.profile.angle_deg = rect.angle_deg;
   f.profile.shape = ProfileShape::GeneralClosed;
 
-  const auto standing = standing_side_lengths(removed, part);
   for (int s = 0; s < 4; ++s) {
-    if (standing[s] > 1.0 && contact.coverage[s] >= 0.9 * standing[s]) {
+    if (contact.coverage[s] <= 0.9) continue;  // cannot be 90 % of more than 1 mm standing
+    const double standing = standing_side_length(s, removed, part);
+    if (standing > 1.0 && contact.coverage[s] >= 0.9 * standing) {
       f.bottom = BottomCondition::None;
       return finish(FeatureType::Step);
     }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <atomic>
 #include <mutex>
 
 namespace ncbridge::feature_recognizer {
@@ -198,8 +199,14 @@ struct Region::Impl {
 
   // Contours that cover at least the part of the region inside `near` (all of them for a small
   // region): what an operation with a region inside `near` needs.
+  // Tiles pay off for a region met again and again by small ones (a face, the band along the
+  // part's outline); a large region met a few times only (what earlier features removed near
+  // one) is used whole.
   Paths paths_near(const std::optional<Box2>& near) const {
     if (!tiled() || !near) return paths();
+    const double near_area = std::max(0.0, near->xmax - near->xmin) * std::max(0.0, near->ymax - near->ymin);
+    const double own_area = std::max(0.0, box->xmax - box->xmin) * std::max(0.0, box->ymax - box->ymin);
+    if (near_area >= 0.25 * own_area || small_queries_.fetch_add(1, std::memory_order_relaxed) < 8) return paths();
     const GridBox g = grid_box(*near);
     Paths out;
     for (const auto& tile : tiles()) {
@@ -281,6 +288,7 @@ struct Region::Impl {
   }
 
  private:
+  mutable std::atomic<int> small_queries_{0};  // operations with a region in a small part of this one's box
   mutable std::once_flag tiles_made_;
   mutable std::vector<Tile> tiles_;
 };
