@@ -11,13 +11,17 @@
 namespace ncbridge::feature_recognizer {
 namespace {
 
+// sqrt(dx² + dy²): as exact as std::hypot for coordinates in millimetres, without its care for
+// overflow, which costs more than the rest of these loops.
+double planar_distance(double dx, double dy) { return std::sqrt(dx * dx + dy * dy); }
+
 constexpr double kLevelTolerance = 1e-3;  // mm: two z values closer than this are one level
 
 bool finite(const Point3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 void append_arc(const Point3& from, const Move& move, double tolerance, CuttingPass& pass) {
-  const double r0 = std::hypot(from.x - move.center_x, from.y - move.center_y);
-  const double r1 = std::hypot(move.end.x - move.center_x, move.end.y - move.center_y);
+  const double r0 = planar_distance(from.x - move.center_x, from.y - move.center_y);
+  const double r1 = planar_distance(move.end.x - move.center_x, move.end.y - move.center_y);
   const double a0 = std::atan2(from.y - move.center_y, from.x - move.center_x);
   const double a1 = std::atan2(move.end.y - move.center_y, move.end.x - move.center_x);
   const double two_pi = 2 * std::numbers::pi;
@@ -72,7 +76,7 @@ std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>&
       if (move.kind == MoveKind::Arc) {
         append_arc(at, move, tolerance, current);
       } else {
-        current.xy_length += std::hypot(move.end.x - at.x, move.end.y - at.y);
+        current.xy_length += planar_distance(move.end.x - at.x, move.end.y - at.y);
         current.points.push_back(move.end);
       }
       current.point_workingsteps.resize(current.points.size(), w);
@@ -98,7 +102,7 @@ bool is_freeform(const CuttingPass& pass) {
   for (std::size_t i = 1; i < pass.points.size(); ++i) {
     const auto& a = pass.points[i - 1];
     const auto& b = pass.points[i];
-    const double xy = std::hypot(b.x - a.x, b.y - a.y), dz = b.z - a.z;
+    const double xy = planar_distance(b.x - a.x, b.y - a.y), dz = b.z - a.z;
     total += xy;
     if (xy > 1e-6 && std::abs(dz) > 1e-4) sloped += xy;
     if (std::abs(dz) > 1e-4) {
@@ -135,7 +139,7 @@ Layer make_layer(const CuttingPass& pass, const ToolpathWorkingstep& ws, std::ve
 double xy_length(const Layer& layer) {
   double length = 0;
   for (const auto& path : layer.paths) {
-    for (std::size_t i = 1; i < path.size(); ++i) length += std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
+    for (std::size_t i = 1; i < path.size(); ++i) length += planar_distance(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
   }
   return length;
 }
@@ -194,7 +198,7 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
   for (std::size_t i = 1; i < pass.points.size(); ++i) {
     const auto& a = pass.points[i - 1];
     const auto& b = pass.points[i];
-    const bool horizontal = std::abs(b.z - a.z) < kLevelTolerance && std::hypot(b.x - a.x, b.y - a.y) > 0;
+    const bool horizontal = std::abs(b.z - a.z) < kLevelTolerance && planar_distance(b.x - a.x, b.y - a.y) > 0;
     if (horizontal) {
       if (piece_has_level && std::abs(a.z - piece_level) > kLevelTolerance) {
         // A new level begins: close the current piece at its last point on the old level.
@@ -251,7 +255,7 @@ Box2 path_box(const std::vector<std::vector<Point3>>& paths, double grow) {
 
 bool CuttingPass::z_only() const {
   for (const auto& p : points) {
-    if (std::hypot(p.x - points.front().x, p.y - points.front().y) > 1e-3) return false;
+    if (planar_distance(p.x - points.front().x, p.y - points.front().y) > 1e-3) return false;
   }
   return true;
 }

@@ -68,8 +68,11 @@ double outer_perimeter(const Region& r) {
   return p;
 }
 
+// The strategies already found for some layers (by index), so that none is analysed twice.
+using KnownStrategies = std::vector<std::pair<std::size_t, StrategyAnalysis>>;
+
 std::vector<RecognizedOperation> make_operations(const MillingGroup& group, const std::vector<Layer>& layers,
-                                                 FeatureType type) {
+                                                 FeatureType type, const KnownStrategies& known = {}) {
   std::vector<RecognizedOperation> ops;
   const auto& last_op = group.operations.back();
   Region last_fill;
@@ -107,7 +110,9 @@ std::vector<RecognizedOperation> make_operations(const MillingGroup& group, cons
     levels.erase(std::unique(levels.begin(), levels.end(), [](double a, double b) { return std::abs(a - b) < 1e-3; }),
                  levels.end());
     for (std::size_t j = 1; j < levels.size(); ++j) op.axial_depth = std::max(op.axial_depth, levels[j] - levels[j - 1]);
-    const auto strategy = analyse_strategy(*deepest);
+    const std::size_t deepest_index = static_cast<std::size_t>(deepest - layers.data());
+    const auto found = std::find_if(known.begin(), known.end(), [&](const auto& known_layer) { return known_layer.first == deepest_index; });
+    const auto strategy = found != known.end() ? found->second : analyse_strategy(*deepest);
     op.strategy = strategy.strategy;
     op.radial_depth = strategy.stepover;
     op.feed = deepest->feed;
@@ -376,9 +381,10 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   f.bottom = group.floor <= part.bottom_z + 1e-3 ? BottomCondition::Through : BottomCondition::Planar;
   if (f.bottom == BottomCondition::Through) f.bottom_z = part.bottom_z;  // CAM cuts a little below
 
+  KnownStrategies known;
   auto finish = [&](FeatureType type) {
     f.type = type;
-    f.operations = make_operations(group, layers, type);
+    f.operations = make_operations(group, layers, type, known);
     return out;
   };
 
@@ -402,7 +408,10 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   }
 
   std::vector<StrategyAnalysis> strategies;
-  for (auto i : group.layers()) strategies.push_back(analyse_strategy(layers[i]));
+  for (auto i : group.layers()) {
+    strategies.push_back(analyse_strategy(layers[i]));
+    known.emplace_back(i, strategies.back());
+  }
   // A hole milled by interpolation: in every layer circles about one centre, one radius or a
   // helix at each of several radii (a circular pocket is cleared by flat concentric circles).
   const bool all_circles = std::all_of(strategies.begin(), strategies.end(), [&](const auto& s) {
@@ -423,7 +432,7 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
     f.x = rect.center.x, f.y = rect.center.y;
     f.bottom = BottomCondition::Planar;
     out.footprint = *island;  // its top is the boss's
-    f.operations = make_operations(group, layers, f.type);
+    f.operations = make_operations(group, layers, f.type, known);
     return out;
   }
 
