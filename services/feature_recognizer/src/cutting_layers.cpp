@@ -43,12 +43,22 @@ void append_arc(const Point3& from, const Move& move, double tolerance, CuttingP
 }
 
 // A pass ends at a rapid or a tool change; it runs on across workingsteps otherwise (an
-// upstream segmenter may split a plunge from the cut it starts, at a feed change).
-std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>& workingsteps, double tolerance) {
-  std::vector<CuttingPass> passes;
+// upstream segmenter may split a plunge from the cut it starts, at a feed change). Each pass is
+// handed on as it ends, so that only one is held at a time.
+template <typename OnPass>
+void cut_into_passes(const std::vector<ToolpathWorkingstep>& workingsteps, double tolerance, OnPass on_pass) {
   CuttingPass current;
+  std::size_t sequence = 0;
   auto flush = [&] {
-    if (current.points.size() >= 2) passes.push_back(std::move(current));
+    if (current.points.size() >= 2) {
+      current.sequence = sequence++;
+      current.z_min = current.z_max = current.points.front().z;
+      for (const auto& p : current.points) {
+        current.z_min = std::min(current.z_min, p.z);
+        current.z_max = std::max(current.z_max, p.z);
+      }
+      on_pass(std::move(current));
+    }
     current = CuttingPass{};
   };
   Point3 at;
@@ -71,7 +81,10 @@ std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>&
       if (current.points.empty()) {
         current.workingstep = w;
         current.points.push_back(at);
-        current.point_workingsteps.push_back(w);
+      }
+      if (current.workingstep_runs.empty() || current.workingstep_runs.back().second != w) {
+        // The points this move adds (and the pass's first point) belong to workingstep w.
+        current.workingstep_runs.emplace_back(current.workingstep_runs.empty() ? 0 : current.points.size(), w);
       }
       if (move.kind == MoveKind::Arc) {
         append_arc(at, move, tolerance, current);
@@ -79,20 +92,10 @@ std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>&
         current.xy_length += planar_distance(move.end.x - at.x, move.end.y - at.y);
         current.points.push_back(move.end);
       }
-      current.point_workingsteps.resize(current.points.size(), w);
       at = move.end;
     }
   }
   flush();
-  for (std::size_t i = 0; i < passes.size(); ++i) passes[i].sequence = i;
-  for (auto& pass : passes) {
-    pass.z_min = pass.z_max = pass.points.front().z;
-    for (const auto& p : pass.points) {
-      pass.z_min = std::min(pass.z_min, p.z);
-      pass.z_max = std::max(pass.z_max, p.z);
-    }
-  }
-  return passes;
 }
 
 // A pass whose z goes up and down many times while x and y move is surface machining.
@@ -118,10 +121,7 @@ Layer make_layer(const CuttingPass& pass, const ToolpathWorkingstep& ws, std::ve
                  std::size_t first_point) {
   Layer layer;
   // The workingsteps of the points after the first (the first is where the cut starts from).
-  for (std::size_t i = first_point + 1; i < first_point + path.size() && i < pass.points.size(); ++i) {
-    const auto w = pass.point_workingsteps[i];
-    if (layer.workingsteps.empty() || layer.workingsteps.back() != w) layer.workingsteps.push_back(w);
-  }
+  layer.workingsteps = pass.workingsteps_of(first_point + 1, std::min(first_point + path.size(), pass.points.size()));
   if (layer.workingsteps.empty()) layer.workingsteps = {pass.workingstep};
   layer.sequence = pass.sequence;
   layer.tool = ws.tool;
@@ -221,10 +221,8 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
     if (!piece_has_level && !out.empty() && piece.back().z >= out.back().z - kLevelTolerance) {
       auto& last = out.back().paths.back();
       last.insert(last.end(), piece.begin() + 1, piece.end());
-      for (std::size_t i = piece_first + 1; i < pass.points.size(); ++i) {
-        if (out.back().workingsteps.back() < pass.point_workingsteps[i]) {
-          out.back().workingsteps.push_back(pass.point_workingsteps[i]);
-        }
+      for (auto w : pass.workingsteps_of(piece_first + 1, pass.points.size())) {
+        if (out.back().workingsteps.back() < w) out.back().workingsteps.push_back(w);
       }
       out.back().z_top = std::max(out.back().z_top, piece.back().z);
     } else {
@@ -260,6 +258,18 @@ bool CuttingPass::z_only() const {
   return true;
 }
 
+std::vector<std::size_t> CuttingPass::workingsteps_of(std::size_t first, std::size_t last) const {
+  std::vector<std::size_t> out;
+  for (std::size_t r = 0; r < workingstep_runs.size(); ++r) {
+    const std::size_t begin = workingstep_runs[r].first;
+    const std::size_t end = r + 1 < workingstep_runs.size() ? workingstep_runs[r + 1].first : points.size();
+    if (begin < last && first < end && (out.empty() || out.back() != workingstep_runs[r].second)) {
+      out.push_back(workingstep_runs[r].second);
+    }
+  }
+  return out;
+}
+
 std::vector<std::vector<Point2>> Layer::xy_paths() const {
   std::vector<std::vector<Point2>> out;
   for (const auto& path : paths) {
@@ -286,11 +296,11 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
   std::vector<char> dead;
   std::size_t run_begin = 0;  // the first layer of the current run of one tool at one level
   BoxIndex run_index(25.0);   // the run's layers by their extents
-  for (const auto& pass : cut_into_passes(workingsteps, chord_tolerance)) {
+  cut_into_passes(workingsteps, chord_tolerance, [&](CuttingPass&& pass) {
     const auto& ws = workingsteps[pass.workingstep];
     if (pass.z_only() || (is_hole_making_tool(ws.tool.type) && ws.cycle)) {
       if (pass.z_min >= pass.points.front().z - kLevelTolerance) {
-        continue;  // a feed retract out of a hole cuts nothing new
+        return;  // a feed retract out of a hole cuts nothing new
       }
       DrillPass d;
       d.workingstep = pass.workingstep;
@@ -304,7 +314,7 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
       d.spindle_rpm = ws.spindle_rpm;
       if (ws.cycle) d.at = {ws.cycle->x, ws.cycle->y};
       out.drill_passes.push_back(std::move(d));
-      continue;
+      return;
     }
     if (ws.tool.diameter <= 0) {
       throw InputError({"", 0, 0}, "workingstep " + std::to_string(pass.workingstep) + ": tool T" +
@@ -348,7 +358,7 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
         }
       }
     }
-  }
+  });
   for (std::size_t i = 0; i < layers.size(); ++i) {
     if (dead[i]) continue;
     auto& w = layers[i].workingsteps;
