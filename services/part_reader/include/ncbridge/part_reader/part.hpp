@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "ncbridge/stepnc/geometry.hpp"
@@ -48,6 +49,7 @@ struct Feature {
   FeatureKind kind = FeatureKind::RoundHole;
   std::string source;  // where it was read: "#1864" (AP224 instance), "faces 10, 24" (B-rep)
   std::string name;    // the file's own name for it, when it has one
+  std::uint32_t line = 0;  // the line of the file that defines it (AP224 instances), 0 when none
   // ISO 14649 placement: the origin at the feature's top (a hole's axis where it opens, a
   // pocket's or profile's outline centre, a slot's start), z pointing out of the material (the
   // side the tool comes from), x along the feature's length.
@@ -59,6 +61,9 @@ struct Feature {
   HoleBottom bottom = HoleBottom::Flat;
   double tip_angle = 0;      // Conical: the included angle in degrees (118 for a twist drill's point)
   double bottom_radius = 0;  // FlatWithRadius, Spherical
+  // The diameter's tolerance as the file gives it (upper and lower deviation, mm); B-rep files
+  // carry none.
+  std::optional<std::pair<double, double>> diameter_tolerance;
 
   // Outline in the placement's xy plane: Rectangle (length along x, width along y, centred on
   // the origin), Circle (diameter), General (`boundary`, closed, counter-clockwise).
