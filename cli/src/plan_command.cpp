@@ -15,7 +15,7 @@
 #include "commands.hpp"
 #include "html_report.hpp"
 #include "ncbridge/common/error.hpp"
-#include "ncbridge/part_reader/ap224_reader.hpp"
+#include "ncbridge/part_reader/brep_reader.hpp"
 #include "ncbridge/part_reader/setup_frame.hpp"
 #include "ncbridge/process_planner/planner.hpp"
 #include "ncbridge/setup/stock.hpp"
@@ -48,14 +48,6 @@ struct PlanArguments {
 };
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
-
-pr::Part read_part(const std::string& path, const pr::ReadOptions& options) {
-  const auto read = step_writer::part21::read_part21_file(path);
-  if (!pr::is_ap224(read.graph.header)) {
-    throw InputError({path, 0, 0}, "not an AP224 file (FILE_SCHEMA feature_based_process_planning); B-rep parts are not read yet");
-  }
-  return pr::read_ap224(read.graph, path, options);
-}
 
 // Where the stock file says the part's box starts (its optional "part_bbox_min"), if it does.
 std::optional<std::array<double, 3>> part_min_of(const std::string& stock_file) {
@@ -91,7 +83,7 @@ int run_plan(const PlanArguments& args) {
   options.security_clearance = args.security_clearance;
   const setup::ToolList tools = setup::read_tool_list(args.tools);
 
-  pr::Part part = read_part(args.part, read_options);
+  pr::Part part = pr::read_part_file(args.part, read_options);
   std::string stock_source;
   std::optional<setup::Stock> stock;
   std::array<double, 3> offset{0, 0, 0};
@@ -104,9 +96,13 @@ int run_plan(const PlanArguments& args) {
     }
   }
   if (offset != std::array<double, 3>{0, 0, 0}) pr::move_part(part, offset);
+  if (!args.stock.empty() && !args.stock_step.empty()) throw InputError({args.stock, 0, 0}, "give --stock or --stock-step, not both");
   if (!args.stock.empty()) {
     stock = setup::read_stock(args.stock);
     stock_source = args.stock;
+  } else if (!args.stock_step.empty()) {
+    stock = box_stock(pr::read_step_box(args.stock_step));
+    stock_source = args.stock_step + " (its bounding box)";
   } else if (part.stock) {
     stock = box_stock(pr::bounding_box(*part.stock));
     stock_source = std::string("the file's ") + (part.stock->shape == pr::StockShape::Block ? "block" : "cylinder (its bounding box)") +
@@ -126,6 +122,7 @@ int run_plan(const PlanArguments& args) {
       }
     }
   }
+  pr::add_stock_features(part, pr::Box{stock->min, stock->max});
   const auto t_read = Clock::now();
 
   const process_planner::Plan plan = process_planner::plan(part, *stock, tools, options);
@@ -139,9 +136,9 @@ int run_plan(const PlanArguments& args) {
   const auto t_written = Clock::now();
 
   std::vector<std::string> warnings;
-  for (const auto& w : part.warnings) warnings.push_back(args.part + (w.where.empty() ? "" : " " + w.where) + ": " + w.message);
-  for (const auto& w : plan.warnings) warnings.push_back(args.part + (w.where.empty() ? "" : " " + w.where) + ": " + w.message);
-  for (const auto& w : warnings) std::fprintf(stderr, "%s: warning\n", w.c_str());
+  for (const auto& w : part.warnings) warnings.push_back((w.where.empty() ? "" : w.where + ": ") + w.message);
+  for (const auto& w : plan.warnings) warnings.push_back((w.where.empty() ? "" : w.where + ": ") + w.message);
+  for (const auto& w : warnings) std::fprintf(stderr, "%s: warning: %s\n", args.part.c_str(), w.c_str());
 
   std::string report_text, html_text;
   if (!args.report.empty()) {

@@ -53,6 +53,12 @@ void move_part(Part& part, const std::array<double, 3>& offset) {
   };
   for (auto& f : part.features) move(f.placement.location);
   if (part.stock) move(part.stock->placement.location);
+  for (auto& v : part.footprint) {
+    v.x += offset[0];
+    v.y += offset[1];
+  }
+  part.top_z += offset[2];
+  part.bottom_z += offset[2];
   if (part.bounds) {
     for (int i = 0; i < 3; ++i) {
       part.bounds->min[static_cast<std::size_t>(i)] += offset[static_cast<std::size_t>(i)];

@@ -61,7 +61,8 @@ Plan plan(const pr::Part& part, const setup::Stock& stock, const setup::ToolList
         bool counterbore = false;
         if (f.compound >= 0 && static_cast<std::size_t>(f.compound) < part.compounds.size()) {
           const auto& c = part.compounds[static_cast<std::size_t>(f.compound)];
-          counterbore = c.kind == pr::CompoundKind::Counterbore && c.elements.size() >= 2 && c.elements.front() == index[k];
+          // Every step of a counterbore but the innermost is milled flat.
+          counterbore = c.kind == pr::CompoundKind::Counterbore && c.elements.size() >= 2 && c.elements.back() != index[k];
         }
         fp.operations = plan_hole(f, ids[k], counterbore, context);
         break;

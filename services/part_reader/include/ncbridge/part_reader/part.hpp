@@ -138,6 +138,11 @@ struct Part {
   std::string file_units;  // the file's length unit: "mm", "inch", "m", ...
   std::optional<PartStock> stock;  // the file's own
   std::optional<Box> bounds;       // the solid's axis-aligned box (B-rep parts)
+  // B-rep parts: the outline seen from above (the outer loop of the faces the part stands on,
+  // setup XY, counter-clockwise) and the heights of its top and bottom. The stock-dependent
+  // features (the top face to mill, the outside profile) come from these: add_stock_features.
+  std::vector<OutlineVertex> footprint;
+  double top_z = 0, bottom_z = 0;
   std::vector<Feature> features;
   std::vector<Compound> compounds;
   std::vector<ListedFeature> listed;
@@ -155,6 +160,11 @@ struct ReadOptions {
 
 // The axis-aligned box around a stock (a cylinder's box when it is one).
 Box bounding_box(const PartStock& stock);
+
+// For a B-rep part cut from `stock` (setup frame): the planar face that mills the stock's top
+// down to the part's top, and the general outside profile when the stock reaches beyond the
+// part's outline. Both come first in Part::features. No-op for parts without a footprint.
+void add_stock_features(Part& part, const Box& stock);
 
 std::string_view to_string(FeatureKind kind);  // the ISO 14649 entity name in lower case
 std::string_view to_string(HoleBottom bottom);  // "through", "flat", "conical", ...
