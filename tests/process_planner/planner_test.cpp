@@ -306,3 +306,27 @@ TEST(PlannerRamp, TheCounterboreFromBelow) {
   EXPECT_TRUE(upright.project.main_workplan.its_elements.empty());
   expect_valid_cc2(upright);
 }
+
+TEST(PlannerHoles, ACountersinkIsSunkAfterItsHoleIsDrilled) {
+  pr::Feature cone = hole(50, 50, 50, 12, 3, pr::HoleBottom::Conical);
+  cone.tip_angle = 90;
+  pr::Feature through = hole(50, 50, 47, 6.35, 47, pr::HoleBottom::Through);
+  cone.compound = through.compound = 0;
+  pr::Part part = block_with({cone, through});
+  part.compounds.push_back({pr::CompoundKind::Countersink, "test", {0, 1}});
+  auto tools = shop_tools().tools();
+  EXPECT_THROW(pp::plan(part, kBlock, ncbridge::setup::ToolList(tools)), ncbridge::InputError);  // the spot drill is too small
+  ncbridge::setup::Tool chamfer;
+  chamfer.number = 20, chamfer.name = "CHAMFER_90", chamfer.type = ncbridge::setup::ToolType::ChamferMill, chamfer.diameter = 16,
+  chamfer.point_angle = 90;
+  tools.push_back(chamfer);
+  const pp::Plan plan = pp::plan(part, kBlock, ncbridge::setup::ToolList(tools));
+  const auto all = steps(plan);
+  ASSERT_EQ(all.size(), 3u);
+  EXPECT_EQ(all[0].id, "CENTER DRILL HOLE2 D=6.35MM");
+  EXPECT_EQ(all[1].id, "PECK DRILL HOLE2 D=6.35MM");
+  EXPECT_EQ(all[2].id, "COUNTERSINK HOLE1 D=12MM");
+  EXPECT_EQ(all[2].tool, 20);
+  EXPECT_DOUBLE_EQ(*as<sn::Drilling>(all[2]).cutting_depth, 3);
+  expect_valid_cc2(plan);
+}

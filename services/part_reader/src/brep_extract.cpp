@@ -94,7 +94,7 @@ OrientedEdge oriented_edge(const TopoDS_Edge& e, bool reversed, int index) {
       samples = std::max(2, static_cast<int>(std::ceil(o.sweep / (M_PI / 36))));
       break;
     }
-    default: o.kind = CurveKind::Other; samples = 24; break;
+    default: o.kind = CurveKind::Other; samples = 64; break;
   }
   for (int k = 0; k <= samples; ++k) {
     const double t = reversed ? last + (first - last) * k / samples : first + (last - first) * k / samples;

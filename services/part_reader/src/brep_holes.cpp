@@ -285,6 +285,13 @@ void recognize_holes(const Model& m, Recognized& out) {
       const Vec3 in_a = holes[a].enters_high ? holes[a].group.axis : -1.0 * holes[a].group.axis;
       const Vec3 in_b = holes[b].enters_high ? holes[b].group.axis : -1.0 * holes[b].group.axis;
       if (dot(in_a, in_b) < 0 || previous[b] >= 0) continue;
+      // A shallow round recess much wider than the hole in its floor is a circular pocket with
+      // a hole, not a counterbore.
+      const Feature& outer = out.features[holes[a].feature];
+      if (outer.depth < 0.5 * outer.diameter && outer.diameter > 2.5 * 2 * holes[b].group.radius && outer.compound < 0) {
+        out.features[holes[a].feature].kind = FeatureKind::ClosedPocket;
+        break;
+      }
       next[a] = static_cast<int>(b);
       previous[b] = static_cast<int>(a);
       break;

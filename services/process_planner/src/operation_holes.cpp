@@ -29,7 +29,7 @@ std::string mm(double v) {
 
 // Ranks within the holes phase: counterbores milled first (so what is drilled below them starts
 // in air), then centre drilling, drilling, helical milling, reaming, flattening of blind holes.
-enum Rank : int { kCounterbore = 0, kCounterboreFinish, kCenter, kDrill, kHelical, kHelicalFinish, kReam, kFlatten };
+enum Rank : int { kCounterbore = 0, kCounterboreFinish, kCenter, kDrill, kHelical, kHelicalFinish, kReam, kFlatten, kCountersink };
 
 double tip_length(const setup::Tool& drill, double diameter) {
   const double angle = drill.point_angle > 0 ? drill.point_angle : 118.0;
@@ -159,6 +159,17 @@ std::vector<PlannedOperation> plan_hole(const pr::Feature& f, const std::string&
     c.warnings.push_back({f.source, id + ": conical bottom: helical milling leaves it flat"});
   }
   return helical(*mill, f, false, o);
+}
+
+std::vector<PlannedOperation> plan_countersink(const pr::Feature& f, const std::string& id, const PlanContext& c) {
+  const double angle = f.tip_angle > 0 ? f.tip_angle : 90;
+  const setup::Tool* tool = countersink_tool(c.tools, angle, f.diameter);
+  if (!tool) {
+    throw InputError({c.part.file, f.line, 0}, feature_text(f, id) + ": a countersink of " + mm(f.diameter) + " needs a countersink, chamfer mill or spot drill of " +
+                                                   std::to_string(static_cast<int>(std::lround(angle))) + " degrees at least " + mm(f.diameter) + " wide");
+  }
+  // Sunk after the hole is drilled, to the cone's depth.
+  return {{Phase::Holes, kCountersink, tool, Cut::CenterDrilling, "COUNTERSINK", drilling_type<sn::Drilling>(f.depth, c.options)}};
 }
 
 }  // namespace ncbridge::process_planner

@@ -42,6 +42,8 @@ std::vector<PlannedOperation> plan_step(const part_reader::Feature& f, const std
 std::vector<PlannedOperation> plan_outside_profile(const part_reader::Feature& f, const std::string& id, const PlanContext& c);
 // `counterbore`: the outer hole of a counterbore (milled flat, not drilled).
 std::vector<PlannedOperation> plan_hole(const part_reader::Feature& f, const std::string& id, bool counterbore, const PlanContext& c);
+// The cone of a countersunk hole: sunk with a countersink (or chamfer mill, or spot drill) of its angle.
+std::vector<PlannedOperation> plan_countersink(const part_reader::Feature& f, const std::string& id, const PlanContext& c);
 
 // The deepest cut per layer a tool may take: a fraction of its diameter, not beyond its flutes.
 double axial_limit(const setup::Tool& tool, double fraction_of_diameter);

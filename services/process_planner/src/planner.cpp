@@ -58,13 +58,14 @@ Plan plan(const pr::Part& part, const setup::Stock& stock, const setup::ToolList
       case pr::FeatureKind::Step: fp.operations = plan_step(f, ids[k], context); break;
       case pr::FeatureKind::GeneralOutsideProfile: fp.operations = plan_outside_profile(f, ids[k], context); break;
       case pr::FeatureKind::RoundHole: {
-        bool counterbore = false;
+        bool counterbore = false, countersink = false;
         if (f.compound >= 0 && static_cast<std::size_t>(f.compound) < part.compounds.size()) {
           const auto& c = part.compounds[static_cast<std::size_t>(f.compound)];
-          // Every step of a counterbore but the innermost is milled flat.
+          // Every step of a counterbore but the innermost is milled flat; a countersink's cone is sunk.
           counterbore = c.kind == pr::CompoundKind::Counterbore && c.elements.size() >= 2 && c.elements.back() != index[k];
+          countersink = c.kind == pr::CompoundKind::Countersink && c.elements.front() == index[k];
         }
-        fp.operations = plan_hole(f, ids[k], counterbore, context);
+        fp.operations = countersink ? plan_countersink(f, ids[k], context) : plan_hole(f, ids[k], counterbore, context);
         break;
       }
     }
