@@ -57,7 +57,7 @@ void append_key(std::string& out, std::string_view key) {
 
 }  // namespace
 
-Cc1Report::Cc1Report(const std::filesystem::path& path, const Head& head) : file_(path), features_(std::tmpfile()) {
+Cc1Report::Cc1Report(OutputFile& out, const Head& head) : file_(out), features_(std::tmpfile()) {
   if (features_ == nullptr) throw std::system_error(errno, std::generic_category(), "report: temporary file");
   text_ = "{\n  ";
   append_key(text_, "program");
@@ -139,7 +139,7 @@ void Cc1Report::flush_features() {
   feature_text_.clear();
 }
 
-void Cc1Report::commit(const stepnc::Project& project, const Tail& tail) {
+void Cc1Report::finish(const stepnc::Project& project, const Tail& tail) {
   text_ += first_element_ ? "],\n  " : "\n  ],\n  ";
   text_ += "\"features\": [";
   flush_text();
@@ -189,7 +189,6 @@ void Cc1Report::commit(const stepnc::Project& project, const Tail& tail) {
   }
   text_ += tail.timings_ms.empty() ? "}\n}\n" : "\n  }\n}\n";
   flush_text();
-  file_.commit();
 }
 
 }  // namespace ncbridge::cli

@@ -29,6 +29,9 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "errors.hpp"
+#include "input_files.hpp"
+#include "output_files.hpp"
 #include "ncbridge/bus/participant.hpp"
 #include "ncbridge/bus/writer.hpp"
 #include "ncbridge/canonical/call.hpp"
@@ -36,7 +39,6 @@
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/service/job_watch.hpp"
 #include "ncbridge/setup/tool_list.hpp"
-#include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/wire/block.hpp"
 
 namespace ncbridge::cli {
@@ -172,13 +174,25 @@ std::vector<ExecutedLine> as_written(const std::string& text) {
 }
 
 int run_controller_sim(const ControllerSimArguments& args) {
-  std::ifstream in(args.program, std::ios::binary);
-  if (!in) throw InputError({args.program, 0, 0}, "cannot open program file");
-  std::ostringstream text;
-  text << in.rdbuf();
+  if (!args.tools.empty()) require_input_file(args.tools, "--tools");
+  OutputSet outputs;
+  OutputFile* output = args.output.empty() ? nullptr : &outputs.add(args.output, "-o");
+  outputs.protect(args.program);
+  outputs.protect(args.tools);
+  const Input program = open_input(args.program, "program");
+  std::string text;
+  if (program.text) {
+    text = *program.text;
+  } else {
+    std::ifstream in(program.path, std::ios::binary);
+    if (!in) throw InputError({program.name, 0, 0}, "cannot open program file");
+    std::ostringstream read;
+    read << in.rdbuf();
+    text = read.str();
+  }
   const setup::ToolList tools = args.tools.empty() ? setup::ToolList{} : setup::read_tool_list(args.tools);
   const std::vector<ExecutedLine> blocks =
-      args.dialect == "rs274ngc" ? execute(args.program, text.str(), tools) : as_written(text.str());
+      args.dialect == "rs274ngc" ? execute(program.name, text, tools) : as_written(text);
 
   std::string run_id = args.run_id;
   if (run_id.empty()) {
@@ -194,8 +208,8 @@ int run_controller_sim(const ControllerSimArguments& args) {
   if (!args.output.empty()) watch.emplace(participant, job_id);
   bus::Writer writer(participant, bus::Topic::Blocks);
   if (!writer.wait_for_readers(1, std::chrono::seconds(10))) {
-    std::fprintf(stderr, "ncbridge controller-sim: no interpreter service on DDS domain %u\n", participant.domain_id());
-    return 3;
+    throw ServiceUnavailable("no interpreter service on DDS domain " + std::to_string(participant.domain_id()) +
+                             " (is `ncbridge up` running, with the CYCLONEDDS_URI it printed?)");
   }
   const auto period = args.rate > 0 ? std::chrono::duration<double>(1.0 / args.rate) : std::chrono::duration<double>(0);
   auto next = std::chrono::steady_clock::now();
@@ -206,7 +220,7 @@ int run_controller_sim(const ControllerSimArguments& args) {
                  wire::encode_block(b));
     ++seq;
   };
-  publish(wire::BlockKind::RunStart, args.program, 0);
+  publish(wire::BlockKind::RunStart, program.name, 0);
   for (const ExecutedLine& block : blocks) {
     if (period.count() > 0) {
       next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
@@ -226,14 +240,15 @@ int run_controller_sim(const ControllerSimArguments& args) {
   const service::JobOutcome outcome = watch->wait(timeout);
   if (outcome.error) {
     const wire::JobStatus& e = *outcome.error;
-    std::fprintf(stderr, "%s: error: %s (%s)\n", e.where.to_string().c_str(), e.message.c_str(), e.stage.c_str());
-    return 1;
+    print_error(e.where, e.message + " (" + e.stage + ")");
+    return exit_status::input_error;
   }
   if (!outcome.file) {
-    std::fprintf(stderr, "ncbridge controller-sim: run %s not converted after %.0f s\n", job_id.c_str(), args.timeout_s);
-    return 3;
+    throw ServiceUnavailable("run " + job_id + " not converted after " + std::to_string(static_cast<long long>(args.timeout_s)) +
+                             " s (--timeout)");
   }
-  step_writer::write_file_atomically(args.output, outcome.file->content);
+  output->write(outcome.file->content);
+  outputs.commit();
   std::fprintf(stderr, "%zu blocks executed; run end to %s file: %.1f ms\n", blocks.size(),
                outcome.file->level == wire::Part21Level::Cc2 ? "CC2" : "CC1",
                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run_end).count());
@@ -245,16 +260,15 @@ int run_controller_sim(const ControllerSimArguments& args) {
 void add_controller_sim_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ControllerSimArguments>();
   CLI::App* cmd = app.add_subcommand("controller-sim", "Publish a program block by block as a controller running it");
-  cmd->add_option("program", args->program, "Part program")->required()->check(CLI::ExistingFile);
+  cmd->add_option("program", args->program, "Part program; - reads standard input")->required();
   cmd->add_option("--controller", args->controller, "Controller id")->required();
   cmd->add_option("--run-id", args->run_id, "Run id (default: run-<unix ms>)");
-  cmd->add_option("--tools", args->tools, "The controller's tool table (JSON or YAML), for running the program")
-      ->check(CLI::ExistingFile);
+  cmd->add_option("--tools", args->tools, "The controller's tool table (JSON or YAML), for running the program");
   cmd->add_option("--dialect", args->dialect, "Program dialect; control flow is run for rs274ngc only")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain"}));
   cmd->add_option("--rate", args->rate, "Blocks per second (default: as fast as possible)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));
-  cmd->add_option("-o,--output", args->output, "Wait for the run's Part 21 file and write it here");
+  cmd->add_option("-o,--output", args->output, "Wait for the run's Part 21 file and write it here (- for standard output)");
   cmd->add_option("--timeout", args->timeout_s, "Seconds to wait for the file (default 600)");
   cmd->callback([args, &exit_code]() { exit_code = run_controller_sim(*args); });
 }

@@ -1,6 +1,8 @@
 // `ncbridge convert PROGRAM --tools T --stock S -o OUT.stp [--report R.json]`: the embedded
-// pipeline interpreter -> cc1_builder -> step_writer in one process. The output is written
-// atomically: a failed run leaves no file (and an old OUT.stp untouched). CC1 from a program is
+// pipeline interpreter -> cc1_builder -> step_writer in one process. Every input and output path
+// is checked before work starts, and the outputs (Part 21 file, report, page) appear together
+// or not at all (output_files.hpp): a failed run leaves no file and old ones untouched. The
+// program may be "-" (standard input), an output "-" (standard output). CC1 from a program is
 // streamed: each workplan element is written (file and report) as soon as the builder finishes
 // it, so memory stays flat; CC2 needs the whole CC1 model first.
 #include <CLI/CLI.hpp>
@@ -9,7 +11,6 @@
 #include <cctype>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -20,14 +21,16 @@
 #include "cc1_report.hpp"
 #include "cc2_output.hpp"
 #include "commands.hpp"
+#include "errors.hpp"
 #include "html_report.hpp"
+#include "input_files.hpp"
+#include "output_files.hpp"
 #include "ncbridge/cc1_builder/cc1_builder.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/setup/stock.hpp"
 #include "ncbridge/setup/tool_list.hpp"
-#include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/step_writer/part21_writer.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
 #include "ncbridge/step_writer/stepnc_stream_writer.hpp"
@@ -50,6 +53,7 @@ struct ConvertArguments {
   std::string html;
   std::string subroutine_path;
   std::optional<double> security_plane;
+  bool strict = false;
 };
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
@@ -132,7 +136,7 @@ std::string_view kind_of(const stepnc::Executable& e) {
   return std::holds_alternative<stepnc::RapidMovement>(e) ? "RAPID_MOVEMENT" : "MACHINING_WORKINGSTEP";
 }
 
-nlohmann::ordered_json report_of(const ConvertArguments& args, const stepnc::Project& p,
+nlohmann::ordered_json report_of(const ConvertArguments& args, const std::string& program, const stepnc::Project& p,
                          const std::vector<cc1_builder::Warning>& warnings, std::uint64_t calls,
                          std::size_t bytes, const nlohmann::ordered_json& timings) {
   using json = nlohmann::ordered_json;
@@ -164,7 +168,7 @@ nlohmann::ordered_json report_of(const ConvertArguments& args, const stepnc::Pro
   for (const auto& f : p.features) features.push_back({{"id", stepnc::feature_id(f)}, {"type", stepnc::entity_name(f)}});
   json warning_list = json::array();
   for (const auto& w : warnings) warning_list.push_back({{"where", w.where.to_string()}, {"message", w.message}});
-  return json{{"program", args.program},
+  return json{{"program", program},
               {"output", args.output},
               {"level", args.level},
               {"canonical_calls", calls},
@@ -178,11 +182,8 @@ nlohmann::ordered_json report_of(const ConvertArguments& args, const stepnc::Pro
 
 // A Part 21 file (a CC1 file to raise to CC2) rather than a program: it opens with
 // ISO-10303-21; after any white space and /* comments */.
-bool is_part21_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(8192, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
+bool is_part21_file(const Input& input) {
+  const std::string head = input_head(input, 8192);
   std::size_t i = 0;
   while (i < head.size()) {
     if (std::isspace(static_cast<unsigned char>(head[i]))) {
@@ -198,6 +199,22 @@ bool is_part21_file(const std::string& path) {
   return head.compare(i, 13, "ISO-10303-21;") == 0;
 }
 
+// What is open before any work starts: the program, and every output checked.
+struct ConvertRun {
+  Input program;
+  OutputSet outputs;
+  OutputFile* stp = nullptr;
+  OutputFile* report = nullptr;
+  OutputFile* html = nullptr;
+};
+
+// The Part 21 FILE_NAME.name: the output's file name, or the program's for standard output.
+std::string part21_file_name(const ConvertRun& run) {
+  std::string name = run.stp->file_name();
+  if (name.empty()) name = run.program.from_stdin() ? "stdin.stp" : run.program.path.stem().string() + ".stp";
+  return name;
+}
+
 cc1_builder::Options builder_options(const ConvertArguments& args, const std::optional<setup::Stock>& stock) {
   cc1_builder::Options options;
   options.tools = setup::read_tool_list(args.tools);
@@ -206,11 +223,26 @@ cc1_builder::Options builder_options(const ConvertArguments& args, const std::op
   return options;
 }
 
-interpreter::Options interpreter_options(const ConvertArguments& args, const setup::ToolList& tools) {
+// The interpreter's warnings (collected in `read`) before the builder's: they come from reading
+// the program.
+std::vector<cc1_builder::Warning> all_warnings(const std::vector<cc1_builder::Warning>& read,
+                                               const std::vector<cc1_builder::Warning>& built) {
+  std::vector<cc1_builder::Warning> all = read;
+  all.insert(all.end(), built.begin(), built.end());
+  return all;
+}
+
+interpreter::Options interpreter_options(const ConvertArguments& args, const Input& program, const setup::ToolList& tools,
+                                         std::vector<cc1_builder::Warning>& warnings) {
   interpreter::Options interp;
+  interp.strict = args.strict;
+  interp.warning = [&warnings](const SourceLocation& where, const std::string& message) {
+    warnings.push_back({where, message});
+  };
   interp.dialect = dialect_of(args.dialect);
   if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
-    const auto detected = interpreter::detect_dialect_file(args.program);
+    const auto detected = program.text ? interpreter::detect_dialect(*program.text)
+                                       : interpreter::detect_dialect_file(program.path);
     interp.dialect = detected.dialect;
     std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
                  std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
@@ -224,9 +256,13 @@ interpreter::Options interpreter_options(const ConvertArguments& args, const set
   return interp;
 }
 
-void interpret(const ConvertArguments& args, const interpreter::Options& interp, TimedSink& sink) {
+void interpret(const Input& program, const interpreter::Options& interp, TimedSink& sink) {
   try {
-    interpreter::interpret_file(args.program, interp, sink);
+    if (program.text) {
+      interpreter::interpret_text(*program.text, program.name, interp, sink);
+    } else {
+      interpreter::interpret_file(program.path, interp, sink);
+    }
   } catch (...) {
     sink.clear();
     throw;
@@ -234,64 +270,78 @@ void interpret(const ConvertArguments& args, const interpreter::Options& interp,
 }
 
 void print_warnings(const std::vector<cc1_builder::Warning>& warnings) {
-  for (const auto& w : warnings) std::fprintf(stderr, "%s: warning: %s\n", w.where.to_string().c_str(), w.message.c_str());
+  for (const auto& w : warnings) print_warning(w.where, w.message);
 }
 
 // CC1 from a program, streamed: interpreter -> cc1_builder -> (Part 21 writer, report) element
 // by element; the model is never whole in memory.
-int run_streamed_cc1(const ConvertArguments& args, Clock::time_point t0) {
+int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_point t0) {
   const std::optional<setup::Stock> stock = setup::read_stock(args.stock);
   const cc1_builder::Options options = builder_options(args, stock);
-  const interpreter::Options interp = interpreter_options(args, options.tools);
+  std::vector<cc1_builder::Warning> read_warnings;
+  const interpreter::Options interp = interpreter_options(args, run.program, options.tools, read_warnings);
 
   step_writer::StepncWriteOptions write;
-  write.file_name = std::filesystem::path(args.output).filename().string();
-  step_writer::AtomicFile file(args.output);
-  step_writer::StepncStreamWriter writer(write, [&](std::string_view chunk) { file.write(chunk); });
+  write.file_name = part21_file_name(run);
+  step_writer::StepncStreamWriter writer(write, [&](std::string_view chunk) { run.stp->write(chunk); });
   std::optional<Cc1Report> report;
-  if (!args.report.empty()) report.emplace(args.report, Cc1Report::Head{args.program, args.output, args.level});
+  if (run.report) report.emplace(*run.report, Cc1Report::Head{run.program.name, args.output, args.level});
   ElementWriter elements(writer, report ? &*report : nullptr);
   cc1_builder::Cc1Builder builder(options, &elements);
   TimedSink sink(builder, isatty(STDERR_FILENO) != 0, report.has_value());
   const auto t_interpret = Clock::now();
-  interpret(args, interp, sink);
+  interpret(run.program, interp, sink);
   const auto t_built = Clock::now();
   const stepnc::Project project = builder.take_project();
   const std::uint64_t bytes = writer.finish(project);
   const auto t_written = Clock::now();
-  file.commit();
-  const auto t_done = Clock::now();
 
-  print_warnings(builder.warnings());
+  const std::vector<cc1_builder::Warning> warnings = all_warnings(read_warnings, builder.warnings());
   if (report) {
     // The writer's and the report's work happens inside the builder's calls; each is counted
-    // once, under step_writer.
+    // once, under step_writer. "output" is the report's last part, the syncs and renames.
     const double written_ms = ms(elements.spent()) + ms(t_written - t_built);
     Cc1Report::Tail tail;
     tail.canonical_calls = builder.calls_seen();
     tail.output_bytes = bytes;
-    for (const auto& w : builder.warnings()) tail.warnings.emplace_back(w.where.to_string(), w.message);
+    for (const auto& w : warnings) tail.warnings.emplace_back(w.where.to_string(), w.message);
     tail.timings_ms = {{"read_inputs", ms(t_interpret - t0)},
                        {"interpreter", ms(t_built - t_interpret) - ms(sink.spent())},
                        {"cc1_builder", ms(sink.spent()) - ms(elements.spent())},
                        {"step_writer", written_ms},
-                       {"output", ms(t_done - t_written)},
-                       {"total", ms(t_done - t0)}};
-    report->commit(project, tail);
+                       {"output", ms(Clock::now() - t_written)},
+                       {"total", ms(Clock::now() - t0)}};
+    report->finish(project, tail);
   }
+  run.outputs.commit();
+  print_warnings(warnings);
   return 0;
+}
+
+// Every path checked and the program read (standard input) before any work starts.
+ConvertRun open_run(const ConvertArguments& args) {
+  ConvertRun run;
+  if (!args.html.empty() && args.level != "cc2") {
+    throw UsageError("--html needs --level cc2 (it draws the recognised features)");
+  }
+  if (!args.tools.empty()) require_input_file(args.tools, "--tools");
+  if (!args.stock.empty()) require_input_file(args.stock, "--stock");
+  run.stp = &run.outputs.add(args.output, "-o");
+  if (!args.report.empty()) run.report = &run.outputs.add(args.report, "--report");
+  if (!args.html.empty()) run.html = &run.outputs.add(args.html, "--html");
+  for (const std::string* input : {&args.program, &args.tools, &args.stock}) run.outputs.protect(*input);
+  run.program = open_input(args.program, "program");
+  return run;
 }
 
 int run_convert(const ConvertArguments& args) {
   const auto t0 = Clock::now();
-  if (!args.html.empty() && args.level != "cc2") {
-    throw InputError({args.program, 0, 0}, "--html needs --level cc2 (it draws the recognised features)");
-  }
-  const bool part21_input = is_part21_file(args.program);
+  ConvertRun run = open_run(args);
+  const bool part21_input = is_part21_file(run.program);
   if (!part21_input && (args.tools.empty() || args.stock.empty())) {
-    throw InputError({args.program, 0, 0}, "converting a program needs --tools and --stock");
+    throw UsageError("converting a program needs --tools and --stock");
   }
-  if (!part21_input && args.level == "cc1") return run_streamed_cc1(args, t0);
+  if (!part21_input && args.level == "cc1") return run_streamed_cc1(args, run, t0);
   std::vector<cc1_builder::Warning> warnings;
   std::uint64_t calls = 0;
   stepnc::Project project;
@@ -301,67 +351,68 @@ int run_convert(const ConvertArguments& args) {
   Clock::duration builder_spent{};
   if (part21_input) {  // the CC1 model read back: everything recognition uses is in the file
     t_interpret = Clock::now();
-    auto read = step_writer::read_stepnc_file(args.program);
+    auto read = run.program.text ? step_writer::read_stepnc(*run.program.text, run.program.name)
+                                 : step_writer::read_stepnc_file(run.program.path);
     for (const auto& d : read.warnings) warnings.push_back({d.where, d.message});
     project = std::move(read.project);
     t_built = Clock::now();
   } else {
     const cc1_builder::Options options = builder_options(args, stock);
-    const interpreter::Options interp = interpreter_options(args, options.tools);
+    std::vector<cc1_builder::Warning> read_warnings;
+    const interpreter::Options interp = interpreter_options(args, run.program, options.tools, read_warnings);
     cc1_builder::Cc1Builder builder(options);
     TimedSink sink(builder, isatty(STDERR_FILENO) != 0, !args.report.empty());
     t_interpret = Clock::now();
-    interpret(args, interp, sink);
+    interpret(run.program, interp, sink);
     t_built = Clock::now();
-    warnings = builder.warnings();
+    warnings = all_warnings(read_warnings, builder.warnings());
     calls = builder.calls_seen();
     project = builder.take_project();
     builder_spent = sink.spent();
   }
   // CC2: the features recognised in the CC1 model, with their workingsteps (cc2_output.hpp).
   std::optional<Cc2Output> cc2;
-  if (args.level == "cc2") cc2 = build_cc2(project, stock, args.program);
+  if (args.level == "cc2") cc2 = build_cc2(project, stock, run.program.name);
   const auto t_recognized = Clock::now();
 
   step_writer::StepncWriteOptions write;
-  write.file_name = std::filesystem::path(args.output).filename().string();
+  write.file_name = part21_file_name(run);
   if (cc2) write.description = {"ISO 14649 CC2 program written by ncbridge"};
-  // The text streams into the temporary file as it is made; "output" is the fsync and rename.
-  step_writer::AtomicFile file(args.output);
-  const std::uint64_t bytes = step_writer::write_stepnc(cc2 ? cc2->project : project, write, [&](std::string_view chunk) { file.write(chunk); });
+  // The text streams into the temporary file as it is made.
+  const std::uint64_t bytes =
+      step_writer::write_stepnc(cc2 ? cc2->project : project, write, [&](std::string_view chunk) { run.stp->write(chunk); });
   const auto t_written = Clock::now();
-  file.commit();
-  const auto t_done = Clock::now();
 
   if (cc2) {
     for (const auto& w : cc2->warnings) {
       cc1_builder::Warning warning;
-      warning.where.file = args.program;
+      warning.where.file = run.program.name;
       warning.message = w;
       warnings.push_back(std::move(warning));
     }
   }
-  print_warnings(warnings);
-  if (!args.report.empty()) {
+  if (run.report) {
     const double builder_ms = ms(builder_spent);
     nlohmann::ordered_json timings{{"read_inputs", ms(t_interpret - t0)},
                                  {"interpreter", ms(t_built - t_interpret) - builder_ms},
                                  {"cc1_builder", builder_ms}};
     if (cc2) timings["feature_recognizer"] = ms(t_recognized - t_built);
     timings["step_writer"] = ms(t_written - t_recognized);
-    timings["output"] = ms(t_done - t_written);
-    timings["total"] = ms(t_done - t0);
-    auto report = report_of(args, cc2 ? cc2->project : project, warnings, calls, bytes, timings);
+    timings["output"] = ms(Clock::now() - t_written);
+    timings["total"] = ms(Clock::now() - t0);
+    auto report = report_of(args, run.program.name, cc2 ? cc2->project : project, warnings, calls, bytes, timings);
     if (cc2) report["features"] = cc2_features_json(*cc2);
-    step_writer::write_file_atomically(args.report, report.dump(2) + "\n");
+    run.report->write(report.dump(2) + "\n");
   }
-  if (!args.html.empty()) {
+  if (run.html) {
     HtmlReportInput page;
-    page.title = std::filesystem::path(args.program).filename().string();
+    page.title = run.program.from_stdin() ? run.program.name : run.program.path.filename().string();
     page.cc2 = &*cc2;
     for (const auto& w : warnings) page.warnings.push_back(w.where.to_string() + ": " + w.message);
-    step_writer::write_file_atomically(args.html, html_report(page));
+    run.html->write(html_report(page));
   }
+  run.outputs.commit();
+  print_warnings(warnings);
   return 0;
 }
 
@@ -370,20 +421,22 @@ int run_convert(const ConvertArguments& args) {
 void add_convert_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ConvertArguments>();
   CLI::App* cmd = app.add_subcommand("convert", "Convert a part program into an ISO 14649 (STEP-NC) Part 21 file");
-  cmd->add_option("program", args->program, "Part program, or a CC1 Part 21 file to raise to --level cc2")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md); needed for a program")->check(CLI::ExistingFile);
-  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML, docs/formats/stock.md); needed for a program")->check(CLI::ExistingFile);
+  cmd->add_option("program", args->program, "Part program, or a CC1 Part 21 file to raise to --level cc2; - reads standard input")->required();
+  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md); needed for a program");
+  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML, docs/formats/stock.md); needed for a program");
   cmd->add_option("--dialect", args->dialect, "Program dialect")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));
   cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units,
                   "Unit of Heidenhain F words (mm/s for FreeCAD's Heidenhain post; never guessed)")
       ->check(CLI::IsMember({"mm/min", "mm/s"}));
   cmd->add_option("--level", args->level, "Conformance class of the output")->check(CLI::IsMember({"cc1", "cc2"}));
-  cmd->add_option("-o,--output", args->output, "Part 21 file to write")->required();
+  cmd->add_option("-o,--output", args->output, "Part 21 file to write; - writes standard output")->required();
   cmd->add_option("--report", args->report, "Also write a JSON report (docs/formats/report.md)");
   cmd->add_option("--html", args->html, "Also write an HTML page: top view, toolpaths, features (--level cc2)");
   cmd->add_option("--security-plane", args->security_plane, "Security plane Z in mm (default: the highest rapid)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
+  cmd->add_flag("--strict", args->strict,
+                "Refuse what is otherwise read with a warning (machine builder M codes, G43 without tool lengths)");
   cmd->callback([args, &exit_code]() { exit_code = run_convert(*args); });
 }
 

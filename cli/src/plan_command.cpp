@@ -13,7 +13,10 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "errors.hpp"
 #include "html_report.hpp"
+#include "input_files.hpp"
+#include "output_files.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/part_reader/brep_reader.hpp"
 #include "ncbridge/part_reader/setup_frame.hpp"
@@ -21,7 +24,6 @@
 #include "ncbridge/setup/stock.hpp"
 #include "ncbridge/setup/tool_list.hpp"
 #include "ncbridge/setup/yaml_input.hpp"
-#include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/step_writer/part21_reader.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
 #include "plan_report.hpp"
@@ -74,11 +76,24 @@ int run_plan(const PlanArguments& args) {
   const auto t0 = Clock::now();
   pr::ReadOptions read_options;
   const auto up = pr::setup_up_from_string(args.setup);
-  if (!up) throw InputError({args.part, 0, 0}, "--setup must be one of +z, -z, +x, -x, +y, -y");
+  if (!up) throw UsageError("--setup must be one of +z, -z, +x, -x, +y, -y");
   read_options.up = *up;
   process_planner::Options options;
   const auto material = process_planner::material_from_string(args.material);
-  if (!material) throw InputError({args.part, 0, 0}, "--material must be steel, aluminium, stainless, cast_iron, brass or plastic");
+  if (!material) throw UsageError("--material must be steel, aluminium, stainless, cast_iron, brass or plastic");
+  if (!args.stock.empty() && !args.stock_step.empty()) throw UsageError("give --stock or --stock-step, not both");
+  // Every input and output checked before the work starts; the outputs appear together at the end.
+  require_input_file(args.part, "part");
+  require_input_file(args.tools, "--tools");
+  if (!args.stock.empty()) require_input_file(args.stock, "--stock");
+  if (!args.stock_step.empty()) require_input_file(args.stock_step, "--stock-step");
+  OutputSet outputs;
+  OutputFile& stp = outputs.add(args.output, "-o");
+  OutputFile* report_file = args.report.empty() ? nullptr : &outputs.add(args.report, "--report");
+  OutputFile* html_file = args.html.empty() ? nullptr : &outputs.add(args.html, "--html");
+  for (const std::string* input : {&args.part, &args.tools, &args.stock, &args.stock_step}) {
+    if (!input->empty()) outputs.protect(*input);
+  }
   options.material = *material;
   options.security_clearance = args.security_clearance;
   const setup::ToolList tools = setup::read_tool_list(args.tools);
@@ -96,7 +111,6 @@ int run_plan(const PlanArguments& args) {
     }
   }
   if (offset != std::array<double, 3>{0, 0, 0}) pr::move_part(part, offset);
-  if (!args.stock.empty() && !args.stock_step.empty()) throw InputError({args.stock, 0, 0}, "give --stock or --stock-step, not both");
   if (!args.stock.empty()) {
     stock = setup::read_stock(args.stock);
     stock_source = args.stock;
@@ -130,7 +144,7 @@ int run_plan(const PlanArguments& args) {
   const auto t_planned = Clock::now();
 
   step_writer::StepncWriteOptions write;
-  write.file_name = std::filesystem::path(args.output).filename().string();
+  write.file_name = stp.file_name();
   write.description = {"ISO 14649 CC2 program written by ncbridge"};
   const std::string cc2_text = step_writer::write_stepnc(plan.project, write);
   const auto t_written = Clock::now();
@@ -138,7 +152,7 @@ int run_plan(const PlanArguments& args) {
   std::vector<std::string> warnings;
   for (const auto& w : part.warnings) warnings.push_back((w.where.empty() ? "" : w.where + ": ") + w.message);
   for (const auto& w : plan.warnings) warnings.push_back((w.where.empty() ? "" : w.where + ": ") + w.message);
-  for (const auto& w : warnings) std::fprintf(stderr, "%s: warning: %s\n", args.part.c_str(), w.c_str());
+  for (const auto& w : warnings) print_warning({args.part, 0, 0}, w);
 
   std::string report_text, html_text;
   if (!args.report.empty()) {
@@ -193,17 +207,10 @@ int run_plan(const PlanArguments& args) {
     html_text = html_report(page);
   }
 
-  // All outputs together: each goes to its temporary first, then they are renamed in turn.
-  std::vector<std::unique_ptr<step_writer::AtomicFile>> files;
-  auto stage = [&](const std::string& path, const std::string& text) {
-    if (path.empty()) return;
-    files.push_back(std::make_unique<step_writer::AtomicFile>(path));
-    files.back()->write(text);
-  };
-  stage(args.output, cc2_text);
-  stage(args.report, report_text);
-  stage(args.html, html_text);
-  for (auto& f : files) f->commit();
+  stp.write(cc2_text);
+  if (report_file) report_file->write(report_text);
+  if (html_file) html_file->write(html_text);
+  outputs.commit();
   return 0;
 }
 
@@ -212,10 +219,10 @@ int run_plan(const PlanArguments& args) {
 void add_plan_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<PlanArguments>();
   CLI::App* cmd = app.add_subcommand("plan", "Plan a STEP part (AP224 features or a B-rep) into an ISO 14649 CC2 file");
-  cmd->add_option("part", args->part, "STEP part: AP224 (features) or AP203/AP214/AP242 (B-rep)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--stock", args->stock, "Stock block (docs/formats/stock.md); its part_bbox_min places the part")->check(CLI::ExistingFile);
-  cmd->add_option("--stock-step", args->stock_step, "Stock as a STEP solid (its bounding box)")->check(CLI::ExistingFile);
+  cmd->add_option("part", args->part, "STEP part: AP224 (features) or AP203/AP214/AP242 (B-rep)")->required();
+  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md)")->required();
+  cmd->add_option("--stock", args->stock, "Stock block (docs/formats/stock.md); its part_bbox_min places the part");
+  cmd->add_option("--stock-step", args->stock_step, "Stock as a STEP solid (its bounding box)");
   cmd->add_option("-o,--output", args->output, "CC2 Part 21 file to write")->required();
   cmd->add_option("--report", args->report, "Also write a JSON report (docs/plan.md)");
   cmd->add_option("--html", args->html, "Also write an HTML page of the planned features");

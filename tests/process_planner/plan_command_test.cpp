@@ -132,7 +132,7 @@ TEST(PlanCommand, NoToolForAFeatureWritesNothing) {
                          q(dir / "old.stp") + " --report " + q(dir / "r.json") + " --html " + q(dir / "r.html"),
                      dir);
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find("milled_plate_ap224.stp:78: error: POCKET1 (#71): needs a flat end mill of at most 12.7 mm"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("milled_plate_ap224.stp:78: POCKET1 (#71): needs a flat end mill of at most 12.7 mm"), std::string::npos) << r.err;
   EXPECT_EQ(read_file(dir / "old.stp"), "an older file\n");
   EXPECT_FALSE(fs::exists(dir / "r.json"));
   EXPECT_FALSE(fs::exists(dir / "r.html"));

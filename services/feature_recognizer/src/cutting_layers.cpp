@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "box_index.hpp"
 #include "ncbridge/common/error.hpp"
 
 namespace ncbridge::feature_recognizer {
@@ -34,7 +35,6 @@ void append_arc(const Point3& from, const Move& move, double tolerance, CuttingP
                            from.z + (move.end.z - from.z) * t});
   }
   pass.points.back() = move.end;
-  pass.arcs.push_back({{move.center_x, move.center_y}, (r0 + r1) / 2, sweep, from.z, move.end.z});
   pass.xy_length += std::abs(sweep) * (r0 + r1) / 2;
 }
 
@@ -142,12 +142,22 @@ double xy_length(const Layer& layer) {
 
 // A short run above the level the pass cuts at, then back down to it (or the end of the pass):
 // the tool lifting over a tab or a clamp, part of the lower level.
-void merge_tabs(std::vector<Layer>& slices) {
+std::vector<Layer> merge_tabs(std::vector<Layer> slices) {
+  if (slices.empty()) return slices;
+  std::vector<double> lengths;
+  lengths.reserve(slices.size());
+  for (const auto& slice : slices) lengths.push_back(xy_length(slice));
+  std::vector<Layer> out;
+  out.reserve(slices.size());
+  out.push_back(std::move(slices.front()));
+  double low_length = lengths.front();
   for (std::size_t k = 1; k < slices.size();) {
-    auto& low = slices[k - 1];
+    auto& low = out.back();
     const bool rises = slices[k].z > low.z + kLevelTolerance;
     const bool back = k + 1 == slices.size() || std::abs(slices[k + 1].z - low.z) < kLevelTolerance;
-    if (!rises || !back || xy_length(slices[k]) >= xy_length(low)) {
+    if (!rises || !back || lengths[k] >= low_length) {
+      out.push_back(std::move(slices[k]));
+      low_length = lengths[k];
       ++k;
       continue;
     }
@@ -159,9 +169,11 @@ void merge_tabs(std::vector<Layer>& slices) {
         if (low.workingsteps.back() < w) low.workingsteps.push_back(w);
       }
       low.z_top = std::max(low.z_top, slices[j].z_top);
+      low_length += lengths[j];  // the slice's moves, now the level's (its first point was the level's last)
     }
-    slices.erase(slices.begin() + static_cast<std::ptrdiff_t>(k), slices.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    k = last + 1;
   }
+  return out;
 }
 
 // Slices a milling pass at its cutting levels: each run of horizontal moves is a level; the
@@ -172,7 +184,6 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
   if (is_freeform(pass)) {
     Layer layer = make_layer(pass, ws, pass.points, 0);
     layer.freeform = true;
-    layer.arcs = pass.arcs;
     out.push_back(std::move(layer));
     return out;
   }
@@ -216,16 +227,7 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
       out.push_back(make_layer(pass, ws, piece, piece_first));
     }
   }
-  merge_tabs(out);
-  for (auto& layer : out) {
-    for (const auto& arc : pass.arcs) {
-      if (std::min(arc.z_start, arc.z_end) >= layer.z - kLevelTolerance &&
-          std::max(arc.z_start, arc.z_end) <= layer.z_top + kLevelTolerance) {
-        layer.arcs.push_back(arc);
-      }
-    }
-  }
-  return out;
+  return merge_tabs(std::move(out));
 }
 
 bool boxes_touch(const Box2& a, const Box2& b) {
@@ -274,7 +276,12 @@ bool is_hole_making_tool(setup::ToolType type) {
 CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkingstep>& workingsteps,
                                                 double chord_tolerance) {
   CutterLocationAnalysis out;
+  // Layers as they are made; a layer merged into a later one leaves a dead slot (kept so that the
+  // run's index stays valid), removed at the end.
+  std::vector<Layer> layers;
+  std::vector<char> dead;
   std::size_t run_begin = 0;  // the first layer of the current run of one tool at one level
+  BoxIndex run_index(25.0);   // the run's layers by their extents
   for (const auto& pass : cut_into_passes(workingsteps, chord_tolerance)) {
     const auto& ws = workingsteps[pass.workingstep];
     if (pass.z_only() || (is_hole_making_tool(ws.tool.type) && ws.cycle)) {
@@ -305,33 +312,45 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
       layer.extent = path_box(layer.paths, r);
       // Pieces of one tool at one level, one after the other, touching (also through others of
       // the run, as passes broken around an island are): one layer.
-      const bool continues_run = run_begin < out.layers.size() && !layer.freeform &&
-                                 !out.layers.back().freeform && out.layers.back().tool.number == layer.tool.number &&
-                                 std::abs(out.layers.back().z - layer.z) < kLevelTolerance;
-      if (!continues_run) run_begin = out.layers.size();
-      out.layers.push_back(std::move(layer));
+      const bool continues_run = run_begin < layers.size() && !layer.freeform && !layers.back().freeform &&
+                                 layers.back().tool.number == layer.tool.number &&
+                                 std::abs(layers.back().z - layer.z) < kLevelTolerance;
+      if (!continues_run) {
+        run_begin = layers.size();
+        run_index = BoxIndex(25.0);
+      }
+      layers.push_back(std::move(layer));
+      dead.push_back(0);
+      run_index.insert(layers.size() - 1, layers.back().extent);
       for (bool merged = true; merged;) {
         merged = false;
-        auto& last = out.layers.back();
-        for (std::size_t k = run_begin; k + 1 < out.layers.size(); ++k) {
-          if (!boxes_touch(out.layers[k].extent, last.extent)) continue;
-          auto& into = out.layers[k];
+        const std::size_t at = layers.size() - 1;
+        auto& last = layers[at];
+        for (auto k : run_index.candidates(last.extent)) {
+          if (k < run_begin || k >= at || dead[k] || !boxes_touch(layers[k].extent, last.extent)) continue;
+          auto& into = layers[k];
           for (auto& p : last.paths) into.paths.push_back(std::move(p));
-          into.arcs.insert(into.arcs.end(), last.arcs.begin(), last.arcs.end());
+          // Sorted and made unique once, at the end.
           into.workingsteps.insert(into.workingsteps.end(), last.workingsteps.begin(), last.workingsteps.end());
-          std::sort(into.workingsteps.begin(), into.workingsteps.end());
-          into.workingsteps.erase(std::unique(into.workingsteps.begin(), into.workingsteps.end()), into.workingsteps.end());
           into.z_top = std::max(into.z_top, last.z_top);
-          into.extent = path_box(into.paths, r);
+          into.extent = {std::min(into.extent.xmin, last.extent.xmin), std::min(into.extent.ymin, last.extent.ymin),
+                         std::max(into.extent.xmax, last.extent.xmax), std::max(into.extent.ymax, last.extent.ymax)};
           // The merged layer goes last, so that it can absorb the others it now touches.
-          Layer moved = std::move(into);
-          out.layers.erase(out.layers.begin() + static_cast<std::ptrdiff_t>(k));
-          out.layers.back() = std::move(moved);
+          layers[at] = std::move(into);
+          dead[k] = 1;
+          run_index.insert(at, layers[at].extent);
           merged = true;
           break;
         }
       }
     }
+  }
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    if (dead[i]) continue;
+    auto& w = layers[i].workingsteps;
+    std::sort(w.begin(), w.end());
+    w.erase(std::unique(w.begin(), w.end()), w.end());
+    out.layers.push_back(std::move(layers[i]));
   }
   return out;
 }

@@ -34,20 +34,38 @@ std::vector<std::vector<Point2>> level_runs(const Layer& layer) {
 }
 
 // A loop closes when the path comes back to a point it passed since the last loop closed,
-// at least `min_length` of path later.
+// at least `min_length` of path later. The points passed are kept in cells of the closing
+// distance, so each point looks at the few near it, not at the whole run.
 int count_closed_loops(const std::vector<Point2>& run, double min_length) {
+  constexpr double kClose = 1e-2;
+  using Cell = std::pair<long long, long long>;
+  auto cell_of = [](Point2 p) {
+    return Cell{static_cast<long long>(std::floor(p.x / kClose)), static_cast<long long>(std::floor(p.y / kClose))};
+  };
+  std::map<Cell, std::vector<std::size_t>> passed;
   int loops = 0;
-  std::size_t start = 0;
   std::vector<double> along(run.size(), 0);
-  for (std::size_t i = 1; i < run.size(); ++i) {
-    along[i] = along[i - 1] + std::hypot(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
-    for (std::size_t j = start; j < i; ++j) {
-      if (along[i] - along[j] > min_length && std::hypot(run[i].x - run[j].x, run[i].y - run[j].y) < 1e-2) {
-        ++loops;
-        start = i;
-        break;
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    if (i > 0) along[i] = along[i - 1] + std::hypot(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
+    const Cell c = cell_of(run[i]);
+    bool closes = false;
+    for (long long dx = -1; dx <= 1 && !closes; ++dx) {
+      for (long long dy = -1; dy <= 1 && !closes; ++dy) {
+        auto it = passed.find({c.first + dx, c.second + dy});
+        if (it == passed.end()) continue;
+        for (auto j : it->second) {
+          if (along[i] - along[j] > min_length && std::hypot(run[i].x - run[j].x, run[i].y - run[j].y) < kClose) {
+            closes = true;
+            break;
+          }
+        }
       }
     }
+    if (closes) {
+      ++loops;
+      passed.clear();  // the next loop starts here
+    }
+    passed[c].push_back(i);
   }
   return loops;
 }
@@ -99,18 +117,30 @@ Point2 fit_circle_center(const Layer& layer, Point2 guess, double radius) {
   return {guess.x - solution[0] / 2, guess.y - solution[1] / 2};
 }
 
-// The mean distance from `c` of the vertices near the circle of `radius` about it.
-double mean_distance(const Layer& layer, Point2 c, double radius) {
-  double sum = 0;
-  int n = 0;
-  for (const auto& path : layer.paths) {
-    for (const auto& p : path) {
-      const double r = std::hypot(p.x - c.x, p.y - c.y);
-      if (std::abs(r - radius) < 0.05) sum += r, ++n;
+// The distances of the path vertices from a centre, sorted with their running sums: the mean
+// distance of the vertices near any circle about that centre in O(log n).
+class RadialSums {
+ public:
+  RadialSums(const Layer& layer, Point2 c) {
+    for (const auto& path : layer.paths) {
+      for (const auto& p : path) distances_.push_back(std::hypot(p.x - c.x, p.y - c.y));
     }
+    std::sort(distances_.begin(), distances_.end());
+    sums_.resize(distances_.size() + 1, 0);
+    for (std::size_t i = 0; i < distances_.size(); ++i) sums_[i + 1] = sums_[i] + distances_[i];
   }
-  return n > 0 ? sum / n : radius;
-}
+  // The mean distance of the vertices within `band` of `radius` (strictly), `radius` when none.
+  double mean_near(double radius, double band) const {
+    const auto lo = std::upper_bound(distances_.begin(), distances_.end(), radius - band);
+    const auto hi = std::lower_bound(distances_.begin(), distances_.end(), radius + band);
+    if (hi <= lo) return radius;
+    const auto a = static_cast<std::size_t>(lo - distances_.begin()), b = static_cast<std::size_t>(hi - distances_.begin());
+    return (sums_[b] - sums_[a]) / static_cast<double>(b - a);
+  }
+
+ private:
+  std::vector<double> distances_, sums_;
+};
 
 // Whether the layer's moves go round one centre (the centre of their extent), at one or more
 // radii, each a full turn or more, with at most 10 % of the length elsewhere (links, the move
@@ -130,6 +160,7 @@ bool find_circles(const Layer& layer, StrategyAnalysis& out) {
     double radius, sweep;
   };
   std::vector<Ring> rings;
+  std::multimap<double, std::size_t> by_radius;  // ring radius -> index in `rings`
   double total = 0, on = 0, descent = 0;
   for (const auto& path : layer.paths) {
     for (std::size_t i = 1; i < path.size(); ++i) {
@@ -149,11 +180,16 @@ bool find_circles(const Layer& layer, StrategyAnalysis& out) {
       while (turn > std::numbers::pi) turn -= 2 * std::numbers::pi;
       while (turn < -std::numbers::pi) turn += 2 * std::numbers::pi;
       const double r = (r0 + r1) / 2;
-      auto ring = std::find_if(rings.begin(), rings.end(), [&](const Ring& q) { return std::abs(q.radius - r) < tol; });
-      if (ring == rings.end()) {
+      // The first ring made (in path order) within the tolerance of r: looked up by radius.
+      std::size_t found = rings.size();
+      for (auto it = by_radius.lower_bound(r - tol); it != by_radius.end() && it->first <= r + tol; ++it) {
+        if (std::abs(it->first - r) < tol) found = std::min(found, it->second);
+      }
+      if (found == rings.size()) {
         rings.push_back({r, turn});
+        by_radius.emplace(r, found);
       } else {
-        ring->sweep += turn;
+        rings[found].sweep += turn;
       }
     }
   }
@@ -165,7 +201,8 @@ bool find_circles(const Layer& layer, StrategyAnalysis& out) {
   // The extent's centre is off by up to a chord's sagitta: the circle through the outermost
   // ring's vertices (which lie on the true circle) by least squares.
   const auto fitted = fit_circle_center(layer, c, rings.back().radius);
-  for (const auto& ring : rings) out.circle_radii.push_back(mean_distance(layer, fitted, ring.radius));
+  const RadialSums sums(layer, fitted);
+  for (const auto& ring : rings) out.circle_radii.push_back(sums.mean_near(ring.radius, 0.05));
   out.circle_center = fitted;
   out.circle_radius = out.circle_radii.back();
   out.single_circle = rings.size() == 1;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "exact_union.hpp"
 
 namespace ncbridge::feature_recognizer {
 
@@ -100,14 +99,111 @@ std::vector<Point2> simplify_polyline(const std::vector<Point2>& points, double 
   return out;
 }
 
+namespace {
+
+// The tool's polygonal disk: n vertices at fixed angles (a multiple of 4), symmetric about the
+// centre, so that every position of the tool has the very same vertices relative to it.
+std::vector<Point2> polygonal_disk(double radius, double tolerance) {
+  const int n = circle_vertex_count(radius, tolerance);
+  const double step = 2 * std::numbers::pi / n;
+  std::vector<Point2> disk(static_cast<std::size_t>(n));
+  for (int i = 0; i < n / 2; ++i) {
+    disk[static_cast<std::size_t>(i)] = {radius * std::cos(i * step), radius * std::sin(i * step)};
+    disk[static_cast<std::size_t>(i + n / 2)] = {-disk[static_cast<std::size_t>(i)].x, -disk[static_cast<std::size_t>(i)].y};
+  }
+  return disk;
+}
+
+// The disk vertex farthest in direction (nx, ny).
+std::size_t extreme_vertex(const std::vector<Point2>& disk, double nx, double ny) {
+  const auto n = static_cast<long>(disk.size());
+  const double step = 2 * std::numbers::pi / static_cast<double>(n);
+  const long guess = std::lround(std::atan2(ny, nx) / step);
+  long best = 0;
+  double best_dot = -1e300;
+  for (long k = guess - 1; k <= guess + 1; ++k) {
+    const long i = ((k % n) + n) % n;
+    const double dot = disk[static_cast<std::size_t>(i)].x * nx + disk[static_cast<std::size_t>(i)].y * ny;
+    if (dot > best_dot) best_dot = dot, best = i;
+  }
+  return static_cast<std::size_t>(best);
+}
+
+Ring moved(const std::vector<Point2>& disk, Point2 at) {
+  Ring ring;
+  ring.reserve(disk.size());
+  for (const auto& v : disk) ring.push_back({at.x + v.x, at.y + v.y});
+  return ring;
+}
+
+// The sweep of the disk along a polyline as convex pieces whose union is the union of the
+// stadiums of its segments: the disk at both ends; per segment the parallelogram between the
+// disk's extreme vertices across it (a stadium is the two disks and that parallelogram); at each
+// inner vertex the sector of the disk there on the outer side of the turn, between the two
+// segments' extreme vertices (the rest of that disk lies in the neighbouring pieces).
+void sweep_pieces(const std::vector<Point2>& pts, const std::vector<Point2>& disk, double radius, std::vector<Ring>& out) {
+  out.push_back(moved(disk, pts.front()));
+  if (pts.size() == 1) return;
+  const std::size_t n = disk.size();
+  auto unit = [&](std::size_t i) {
+    const double dx = pts[i + 1].x - pts[i].x, dy = pts[i + 1].y - pts[i].y, l = std::hypot(dx, dy);
+    return Point2{dx / l, dy / l};
+  };
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    const Point2 u = unit(i), a = pts[i], b = pts[i + 1];
+    const auto right = disk[extreme_vertex(disk, u.y, -u.x)], left = disk[extreme_vertex(disk, -u.y, u.x)];
+    out.push_back({{a.x + right.x, a.y + right.y}, {b.x + right.x, b.y + right.y}, {b.x + left.x, b.y + left.y},
+                   {a.x + left.x, a.y + left.y}});
+    if (i + 2 >= pts.size()) break;
+    const Point2 w = unit(i + 1);
+    const double cross = u.x * w.y - u.y * w.x, dot = u.x * w.x + u.y * w.y;
+    if (cross == 0 && dot > 0) continue;  // straight on
+    // A left turn (or a reversal) opens the right side: its extreme vertices turn
+    // counter-clockwise; a right turn opens the left side, clockwise.
+    const bool left_turn = cross > 0 || (cross == 0 && dot < 0);
+    const std::size_t from = left_turn ? extreme_vertex(disk, u.y, -u.x) : extreme_vertex(disk, -u.y, u.x);
+    const std::size_t to = left_turn ? extreme_vertex(disk, w.y, -w.x) : extreme_vertex(disk, -w.y, w.x);
+    if (from == to) continue;
+    const std::size_t steps = left_turn ? (to + n - from) % n : (from + n - to) % n;
+    // The sector's apex is not the vertex itself but a point of the disk behind it, inside both
+    // segments' parallelograms: the sector then overlaps them instead of meeting them along the
+    // lines through the vertex, where rounding to the grid would leave slivers.
+    const Point2 mid{disk[from].x + disk[to].x, disk[from].y + disk[to].y};
+    const double mid_length = std::hypot(mid.x, mid.y);
+    const Point2 m = mid_length > 1e-9 * radius ? Point2{mid.x / mid_length, mid.y / mid_length} : u;
+    Ring sector{{b.x - 0.5 * radius * m.x, b.y - 0.5 * radius * m.y}};
+    for (std::size_t k = 0; k <= steps; ++k) {
+      const auto& v = disk[left_turn ? (from + k) % n : (from + n - k) % n];
+      sector.push_back({b.x + v.x, b.y + v.y});
+    }
+    out.push_back(std::move(sector));
+  }
+  out.push_back(moved(disk, pts.back()));
+}
+
+// Pieces taken in path order are near each other: uniting neighbours first resolves their many
+// overlaps once, and the partial unions met higher up have only their outlines left.
+constexpr std::size_t kPiecesPerLeaf = 64;
+
+Region union_tree(const std::vector<Ring>& pieces, std::size_t begin, std::size_t end) {
+  if (end - begin <= kPiecesPerLeaf) {
+    return Region::union_of({pieces.begin() + static_cast<std::ptrdiff_t>(begin), pieces.begin() + static_cast<std::ptrdiff_t>(end)});
+  }
+  const std::size_t mid = begin + (end - begin) / 2;
+  return union_tree(pieces, begin, mid).united(union_tree(pieces, mid, end));
+}
+
+}  // namespace
+
 Region swept_area(const std::vector<std::vector<Point2>>& polylines, double radius, double tolerance) {
+  const auto disk = polygonal_disk(radius, tolerance);
   std::vector<Ring> pieces;
   for (const auto& line : polylines) {
     const auto pts = simplify_polyline(line, tolerance);
-    if (pts.size() == 1) pieces.push_back(stadium(pts[0], pts[0], radius, tolerance));
-    for (std::size_t i = 1; i < pts.size(); ++i) pieces.push_back(stadium(pts[i - 1], pts[i], radius, tolerance));
+    if (!pts.empty()) sweep_pieces(pts, disk, radius, pieces);
   }
-  return exact_union(pieces);
+  if (pieces.empty()) return Region();
+  return union_tree(pieces, 0, pieces.size());
 }
 
 Region boundary_band(const Region& region, double radius, double tolerance) {

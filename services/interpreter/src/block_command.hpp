@@ -34,6 +34,14 @@ struct BlockCommand {
   std::array<std::uint32_t, kMGroupCount> m_column{};
   bool mist_on = false, flood_on = false;  // M7 and M8 may share a block
 
+  // Polar coordinates (`@` radius, `^` angle in degrees; LinuxCNC allows each more than once,
+  // the last one counts).
+  bool has_polar_radius = false, has_polar_angle = false;
+  double polar_radius = 0, polar_angle = 0;
+  std::uint32_t polar_radius_column = 0, polar_angle_column = 0;
+  bool has_polar() const { return has_polar_radius || has_polar_angle; }
+  std::uint32_t polar_column() const { return has_polar_radius ? polar_radius_column : polar_angle_column; }
+
   std::string_view comment;       // the last plain comment of the line
   bool comment_is_message = false;
   std::uint32_t line = 0;

@@ -25,6 +25,10 @@ void Executor::fail(std::uint32_t column, const std::string& message) const {
   throw InputError({file_ ? *file_ : std::string(), line_, column}, message);
 }
 
+void Executor::warn(std::uint32_t column, const std::string& message) const {
+  if (options_.strict) fail(column, message + " (refused under --strict)");
+  if (options_.warning) options_.warning({file_ ? *file_ : std::string(), line_, column}, message);
+}
 
 void Executor::emit(Data data) {
   Call call{std::move(data), source_, cycle_tag_};
@@ -169,11 +173,12 @@ bool Executor::execute(const BlockCommand& b, const Source& source, const std::s
   switch (g0) {
     case 100: do_g10(b); break;
     case 280: case 281: case 300: case 301: do_home(b, g0); break;
-    case 920: case 921: case 922: case 923: do_axis_offsets(b, g0); break;
+    case 520: case 920: case 921: case 922: case 923: do_axis_offsets(b, g0); break;
     default: break;
   }
   // motion: the block's motion code, or the modal one when axis words are present
-  bool axis_motion = g0 != 100 && g0 != 280 && g0 != 300 && g0 != 920 && b.g[kGToolLength] != 431 && b.has_axis();
+  bool axis_motion = g0 != 100 && g0 != 280 && g0 != 300 && g0 != 520 && g0 != 920 && b.g[kGToolLength] != 431 &&
+                     (b.has_axis() || b.has_polar());
   if (b.g[kGMotion] != -1) {
     do_motion(b, b.g[kGMotion], g0 == 530);
   } else if (axis_motion) {
@@ -195,15 +200,24 @@ void Executor::write_position_parameters() {
 void Executor::check_block(const BlockCommand& b) {
   int g0 = b.g[kGNonModal];
   int motion = b.g[kGMotion];
-  bool g0_uses_axes = g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || b.g[kGToolLength] == 431;
-  if (g0_uses_axes && motion != -1 && motion != 800 && b.has_axis()) {
+  bool g0_uses_axes = g0 == 100 || g0 == 280 || g0 == 300 || g0 == 520 || g0 == 920 || b.g[kGToolLength] == 431;
+  if (b.has_polar()) {  // LinuxCNC enhance_block
+    if (s_.plane != Plane::XY) fail(b.polar_column(), "Cannot use polar coordinate except in G17 plane");
+    if (b.has('x')) fail(b.col('x'), "Cannot specify both polar coordinate and X word");
+    if (b.has('y')) fail(b.col('y'), "Cannot specify both polar coordinate and Y word");
+    if (g0_uses_axes && (motion == -1 || motion == 800)) {
+      fail(b.polar_column(), "Polar coordinates can only be used for motion");
+    }
+  }
+  const bool axes = b.has_axis() || b.has_polar();
+  if (g0_uses_axes && motion != -1 && motion != 800 && axes) {
     fail(b.g_column[kGMotion], "Cannot use two G codes that both use axis values");
   }
-  if (motion == 800 && b.has_axis() && !g0_uses_axes) {
+  if (motion == 800 && axes && !g0_uses_axes) {
     fail(b.g_column[kGMotion], "Cannot use axis values with g80");
   }
-  if (motion == -1 && b.has_axis() && !g0_uses_axes && s_.motion == 800) {
-    fail(0, "Cannot use axis values without a g code that uses them");
+  if (motion == -1 && axes && !g0_uses_axes && s_.motion == 800) {
+    fail(b.has_polar() ? b.polar_column() : 0, "Cannot use axis values without a g code that uses them");
   }
   if (g0 == 530 && motion != 0 && motion != 10 && !(motion == -1 && (s_.motion == 0 || s_.motion == 10))) {
     fail(b.g_column[kGNonModal], "Must use G0 or G1 with G53");

@@ -73,7 +73,7 @@ class Runner {
  public:
   Runner(const Options& options, canonical::Sink& sink, const Flavour& flavour)
       : options_(options), flavour_(flavour), table_(lowering::load_dialect_table(flavour.table)),
-        m_(options, sink), reader_(flavour) {}
+        m_(options, sink, table_), reader_(flavour) {}
 
   void run(ProgramText main);
 

@@ -42,7 +42,7 @@ struct CornerPlan {
 class Runner {
  public:
   Runner(const Options& options, canonical::Sink& sink)
-      : options_(options), table_(lowering::load_dialect_table("heidenhain")), m_(options, sink) {}
+      : options_(options), table_(lowering::load_dialect_table("heidenhain")), m_(options, sink, table_) {}
   void run(ProgramText program);
 
  private:
@@ -52,6 +52,9 @@ class Runner {
     int remaining;
   };
   bool step();
+  // Reads the block that starts at line `index` (and the lines a `~` continues it onto) into
+  // `b`; returns the number of lines it spans.
+  std::size_t read_block(std::size_t index, HBlock& b);
   double eval(const HBlock& b, ExprRef ref) {
     if (ref == kNoExpr) m_.fail(b.column, "A word of this block has no value");
     return evaluate(b.exprs, ref, m_.parameters(), m_.file_name());
@@ -69,6 +72,7 @@ class Runner {
   }
   std::size_t find_label(const HBlock& b);
   bool tool_call(const HBlock& b);
+  void sysread(const HBlock& b);
   bool path(const HBlock& b, std::size_t index);
   void cycle_def(const HBlock& b);
   void cycle_call(std::uint32_t column);
@@ -118,7 +122,81 @@ class Runner {
   std::uint64_t steps_ = 0;
   std::size_t last_index_ = 0;
   std::uint64_t backward_jumps_ = 0;
+  std::string block_text_;                         // the block read last, joined and with points
+  std::vector<lowering::LineSegment> segments_;    // where its parts come from
 };
+
+// Where the code of a line ends: at a `;` comment outside quotes (or the line's end).
+std::size_t code_end(std::string_view l) {
+  bool quoted = false;
+  for (std::size_t i = 0; i < l.size(); ++i) {
+    if (l[i] == '"') quoted = !quoted;
+    if (!quoted && l[i] == ';') return i;
+  }
+  return l.size();
+}
+
+// A line whose last character (before trailing blanks) is `~` continues on the next line.
+bool continued_line(std::string_view l, std::size_t& tilde) {
+  std::size_t e = l.size();
+  while (e > 0 && (l[e - 1] == ' ' || l[e - 1] == '\t' || l[e - 1] == '\r')) --e;
+  if (e == 0 || l[e - 1] != '~') return false;
+  tilde = e - 1;
+  return true;
+}
+
+// A line that is a comment block: `;`/`*` first (after the block number).
+bool comment_line(std::string_view l) {
+  std::size_t p = 0;
+  while (p < l.size() && (l[p] == ' ' || l[p] == '\t')) ++p;
+  while (p < l.size() && lowering::is_digit(l[p])) ++p;
+  while (p < l.size() && (l[p] == ' ' || l[p] == '\t')) ++p;
+  return p < l.size() && (l[p] == ';' || l[p] == '*');
+}
+
+// Comma decimal separators (`+18,85`, `0,001`, as TNCs set to a comma write them) read as points.
+void comma_decimals(std::string& s, std::size_t from, std::size_t to) {
+  bool quoted = false;
+  for (std::size_t i = from; i < to && i < s.size(); ++i) {
+    if (s[i] == '"') quoted = !quoted;
+    if (!quoted && s[i] == ',' && i > 0 && lowering::is_digit(s[i - 1]) && i + 1 < s.size() && lowering::is_digit(s[i + 1])) {
+      s[i] = '.';
+    }
+  }
+}
+
+std::size_t Runner::read_block(std::size_t index, HBlock& b) {
+  const ProgramText& text = prog().text;
+  block_text_.assign(text.line(index));
+  segments_.clear();
+  std::size_t tilde = 0;
+  std::size_t lines = 1;
+  if (continued_line(block_text_, tilde)) {
+    // a block over several lines: one comment (kept whole), or code whose lines' own `;`
+    // comments are dropped (cycle parameters carry their names as comments)
+    const bool comment = comment_line(block_text_);
+    block_text_.resize(comment ? tilde : code_end(std::string_view(block_text_).substr(0, tilde)));
+    segments_.push_back({0, static_cast<std::uint32_t>(index + 1), 1});
+    bool more = true;
+    while (more && index + lines < text.size()) {
+      std::string_view next = text.line(index + lines);
+      more = continued_line(next, tilde);
+      std::size_t end = more ? tilde : next.size();
+      std::size_t begin = 0;
+      while (begin < end && (next[begin] == ' ' || next[begin] == '\t')) ++begin;
+      if (!comment) end = std::min(end, begin + code_end(next.substr(begin, end - begin)));
+      while (!block_text_.empty() && block_text_.back() == ' ') block_text_.pop_back();
+      block_text_.push_back(' ');
+      segments_.push_back({static_cast<std::uint32_t>(block_text_.size()), static_cast<std::uint32_t>(index + lines + 1),
+                           static_cast<std::uint32_t>(begin + 1)});
+      block_text_.append(next.substr(begin, end - begin));
+      ++lines;
+    }
+  }
+  if (!comment_line(block_text_)) comma_decimals(block_text_, 0, code_end(block_text_));
+  reader_.read(block_text_, static_cast<std::uint32_t>(index + 1), text.name, b, &segments_);
+  return lines;
+}
 
 void Runner::run(ProgramText program) {
   // Q, QL and QR parameters exist from the start, at 0 (as on the control)
@@ -144,7 +222,12 @@ void Runner::enter_program(ProgramText text) {
   HBlock b;
   for (std::size_t i = 0; i < p.text.size(); ++i) {
     std::string_view l = p.text.line(i);
-    if (up(l).find("LBL") == std::string::npos || up(l).find("CALL") != std::string::npos) continue;
+    // only blocks that are a label: LBL first after the block number
+    std::size_t k = 0;
+    while (k < l.size() && (l[k] == ' ' || l[k] == '\t')) ++k;
+    while (k < l.size() && lowering::is_digit(l[k])) ++k;
+    while (k < l.size() && (l[k] == ' ' || l[k] == '\t')) ++k;
+    if (up(l.substr(k, 3)) != "LBL") continue;
     reader_.read(l, static_cast<std::uint32_t>(i + 1), p.text.name, b);
     if (b.kind != Kind::Label) continue;
     std::string key = b.label_is_name ? b.text : std::to_string(std::lround(b.label_number));
@@ -213,8 +296,9 @@ bool Runner::step() {
   }
   last_index_ = index;
   HBlock b;
-  reader_.read(prog().text.line(index), static_cast<std::uint32_t>(index + 1), prog().text.name, b);
+  prog().pc = index + read_block(index, b);
   m_.at(prog().file, prog().text.name, static_cast<std::uint32_t>(index + 1), b.n);
+  if (segments_.size() > 1) m_.continued(segments_);
   switch (b.kind) {
     case Kind::Empty:
     case Kind::BlkForm:
@@ -331,6 +415,24 @@ bool Runner::step() {
       if (taken) prog().pc = find_label(b) + 1;
       return true;
     }
+    case Kind::Functions: {
+      // M functions alone: those acting at the block's start, then those acting at its end;
+      // M99 calls the cycle here
+      bool m99 = false;
+      for (const HWord& w : b.words) {
+        if (w.name != "M" && w.name != "F") m_.fail(w.column, "Word " + w.name + " in a block of M functions");
+        if (w.name == "F") feed_ = eval(b, w);
+        if (w.name == "M" && eval(b, w) == 99) m99 = true;
+      }
+      NeutralBlock before, after;
+      split_m(b, before, after);
+      if (m_.execute(before)) return false;
+      if (m99) cycle_call(b.column);
+      return !m_.execute(after);
+    }
+    case Kind::SysRead:
+      sysread(b);
+      return true;
     case Kind::Stop: {
       NeutralBlock before, after;
       split_m(b, before, after);
@@ -422,6 +524,62 @@ bool Runner::tool_call(const HBlock& b) {
     }
   }
   return !m_.execute(nb);
+}
+
+// FN 18 SYSREAD, for the system data an offline reading knows: ID10 NR1 (unit), ID20 (NR1
+// active tool, NR2 prepared tool, NR3 tool axis, NR4 spindle speed, NR5 spindle status, NR8
+// coolant, NR9 feed rate), ID50 (tool table: NR1 length L, NR2 radius R, NR3 radius R2 from the
+// tool list; NR4-NR6 the oversizes DL, DR, DR2, which a tool list does not hold: 0; IDX the
+// tool, else the active one) and ID270 NR1 IDX1-3 (the current position in the active
+// coordinate system). The TNC gives lengths in mm whatever the program's unit. Any other ID
+// belongs to the machine (its datum tables, probes, PLC): refused, naming it.
+void Runner::sysread(const HBlock& b) {
+  double id = -1, nr = -1, idx = -1;
+  std::uint32_t id_column = b.column;
+  for (const HWord& w : b.words) {
+    const double v = eval(b, w);
+    if (w.name == "ID") { id = v; id_column = w.column; }
+    else if (w.name == "NR") nr = v;
+    else idx = v;
+  }
+  const int group = static_cast<int>(std::lround(id)), number = static_cast<int>(std::lround(nr));
+  const std::string what = "FN 18: SYSREAD ID" + std::to_string(group) + " NR" + std::to_string(number);
+  const ModalState& s = m_.state();
+  std::optional<double> value;
+  if (group == 10 && number == 1) {
+    value = s.units == canonical::Units::Inches ? 1.0 : 0.0;
+  } else if (group == 20) {
+    switch (number) {
+      case 1: value = s.tool_in_spindle; break;
+      case 2: value = s.selected_tool; break;
+      case 3: value = s.plane == canonical::Plane::YZ ? 0.0 : s.plane == canonical::Plane::XZ ? 1.0 : 2.0; break;
+      case 4: value = s.speed; break;
+      case 5: value = s.spindle == canonical::Direction::Clockwise ? 0.0
+                      : s.spindle == canonical::Direction::Counterclockwise ? 1.0 : -1.0; break;
+      case 8: value = s.flood || s.mist ? 1.0 : 0.0; break;
+      case 9: value = feed(feed_); break;
+      default: break;
+    }
+  } else if (group == 50 && number >= 1 && number <= 6) {
+    const int tool = idx >= 0 ? static_cast<int>(std::lround(idx)) : s.tool_in_spindle;
+    if (number >= 4) {
+      value = 0.0;  // DL, DR, DR2: a tool list holds no oversizes
+    } else {
+      const setup::Tool* t = options_.tools.find(tool);
+      if (t == nullptr) m_.fail(id_column, what + ": tool " + std::to_string(tool) + " is not in the tool list");
+      value = number == 1 ? t->length : number == 2 ? t->diameter / 2.0 : t->corner_radius;
+    }
+  } else if (group == 270 && number == 1 && idx >= 1 && idx <= 3) {
+    const Point3 p = m_.position();
+    value = (idx < 1.5 ? p.x : idx < 2.5 ? p.y : p.z) * s.mm_per_unit();
+  }
+  if (!value) {
+    m_.fail(id_column, what + (idx >= 0 ? " IDX" + std::to_string(std::lround(idx)) : std::string()) +
+                           " is machine data an offline reading does not have (known: ID10 NR1, ID20 NR1-5/8/9, "
+                           "ID50 NR1-6, ID270 NR1)");
+  }
+  const ExprNode& t = b.exprs.nodes[b.target];
+  m_.parameters().set_named(b.exprs.name(t.name_begin, t.name_length), *value);
 }
 
 // CHF between two straight lines: the corner cut at `size` from it along both lines.
@@ -607,12 +765,12 @@ bool Runner::path(const HBlock& b, std::size_t index) {
   // A RND/CHF after this block shortens it to the corner's first tangent point.
   Point3 final_end = end;
   {
-    std::size_t j = index + 1;
+    std::size_t j = prog().pc;
     HBlock nb2;
     while (j < prog().text.size()) {
-      reader_.read(prog().text.line(j), static_cast<std::uint32_t>(j + 1), prog().text.name, nb2);
+      const std::size_t lines = read_block(j, nb2);
       if (nb2.kind != Kind::Empty && nb2.kind != Kind::Comment) break;
-      ++j;
+      j += lines;
     }
     if (j < prog().text.size() && nb2.kind == Kind::Path && (nb2.keyword == "RND" || nb2.keyword == "CHF")) {
       if (rapid) fail_at(j, nb2.column, nb2.keyword + " after a rapid (FMAX) block: a corner is cut at feed");
@@ -620,9 +778,9 @@ bool Runner::path(const HBlock& b, std::size_t index) {
       std::size_t j2 = j + 1;
       HBlock after_block;
       while (j2 < prog().text.size()) {
-        reader_.read(prog().text.line(j2), static_cast<std::uint32_t>(j2 + 1), prog().text.name, after_block);
+        const std::size_t lines = read_block(j2, after_block);
         if (after_block.kind != Kind::Empty && after_block.kind != Kind::Comment) break;
-        ++j2;
+        j2 += lines;
       }
       // a CC between the corner and a C block sets the C block's centre
       std::optional<Point3> pole;
@@ -638,7 +796,7 @@ bool Runner::path(const HBlock& b, std::size_t index) {
         do {
           ++j2;
           if (j2 >= prog().text.size()) break;
-          reader_.read(prog().text.line(j2), static_cast<std::uint32_t>(j2 + 1), prog().text.name, after_block);
+          read_block(j2, after_block);
         } while (after_block.kind == Kind::Empty || after_block.kind == Kind::Comment);
       }
       if (j2 >= prog().text.size() || after_block.kind != Kind::Path) {
@@ -783,6 +941,20 @@ void Runner::cycle_def(const HBlock& b) {
     }
     return;
   }
+  if (cycle == "32") {
+    // 32 TOLERANCE: 32.1 T (the contour tolerance) is the path blending tolerance (G64 P);
+    // 32.2 HSC-MODE and TA (the rotary axes' tolerance) change no path in three axes
+    if (sub != "32.1") return;
+    std::size_t p = b.text.find('T');
+    double t = 0;
+    if (p != std::string::npos) ++p;
+    if (p == std::string::npos || !lowering::read_decimal(b.text, p, t)) m_.fail(b.column, "CYCL DEF 32.1 needs T (the tolerance)");
+    NeutralBlock nb;
+    nb.g(64, b.column);
+    if (t > 0) nb.add('p', t, b.column);
+    m_.execute(nb);
+    return;
+  }
   auto it = table_.cycles.find(cycle);
   if (it == table_.cycles.end()) m_.fail(b.column, "CYCL DEF " + cycle + " is not a cycle ncbridge supports");
   if (sub.empty() || sub == cycle + ".0") {
@@ -790,6 +962,12 @@ void Runner::cycle_def(const HBlock& b) {
     cycle_values_.clear();
     defined_since_cycle_def_.clear();
     cycle_def_line_ = m_.line();
+    for (const auto& [target, value] : b.parameters) {
+      const ExprNode& t = b.exprs.nodes[target];
+      const std::string_view name = b.exprs.name(t.name_begin, t.name_length);
+      m_.parameters().set_named(name, eval(b, value));
+      defined_since_cycle_def_.insert("Q" + std::string(name.substr(2)));
+    }
     return;
   }
   // old-style cycle lines: "1.1 SET UP -2", "1.2 DEPTH -20", "1.5 F100" (any language)

@@ -6,9 +6,13 @@
 
 namespace ncbridge::interpreter::lowering {
 
-DialectMachine::DialectMachine(const Options& options, canonical::Sink& sink)
+DialectMachine::DialectMachine(const Options& options, canonical::Sink& sink, const DialectTable& table)
     : options_(options), sink_(sink), executor_(options, params_, sink), file_name_(&no_file_) {
   params_.set_computed(&executor_);
+  Executor::ArcTolerance arcs;
+  arcs.mm = table.setting("center_arc_radius_tolerance_mm", arcs.mm);
+  arcs.inch = table.setting("center_arc_radius_tolerance_inch", arcs.inch);
+  executor_.set_arc_tolerance(arcs);
 }
 
 void DialectMachine::start() {
@@ -21,11 +25,17 @@ void DialectMachine::at(std::uint32_t file, const std::string& file_name, std::u
   source_ = canonical::Source{file, line, n_number, n_digits};
   file_name_ = &file_name;
   line_ = line;
+  segments_.clear();
   executor_.set_source(source_);
 }
 
 void DialectMachine::fail(std::uint32_t column, const std::string& message) const {
-  throw InputError({*file_name_, line_, column}, message);
+  throw InputError(locate(*file_name_, line_, column, segments_), message);
+}
+
+void DialectMachine::warn(std::uint32_t column, const std::string& message) const {
+  if (options_.strict) fail(column, message + " (refused under --strict)");
+  if (options_.warning) options_.warning(locate(*file_name_, line_, column, segments_), message);
 }
 
 bool DialectMachine::execute(const NeutralBlock& nb) {

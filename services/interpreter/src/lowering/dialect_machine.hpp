@@ -6,11 +6,14 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "block_command.hpp"
 #include "block_model.hpp"
 #include "executor.hpp"
+#include "lowering/dialect_table.hpp"
 #include "lowering/frame.hpp"
+#include "lowering/line_segment.hpp"
 #include "lowering/neutral_block.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "parameters.hpp"
@@ -19,7 +22,9 @@ namespace ncbridge::interpreter::lowering {
 
 class DialectMachine {
  public:
-  DialectMachine(const Options& options, canonical::Sink& sink);
+  // `table`'s settings center_arc_radius_tolerance_mm/_inch, where given, replace LinuxCNC's
+  // default arc end-radius tolerance (Executor::ArcTolerance).
+  DialectMachine(const Options& options, canonical::Sink& sink, const DialectTable& table);
   DialectMachine(const DialectMachine&) = delete;
   DialectMachine& operator=(const DialectMachine&) = delete;
 
@@ -45,6 +50,10 @@ class DialectMachine {
   void message(const std::string& text);  // a MESSAGE call
 
   [[noreturn]] void fail(std::uint32_t column, const std::string& message) const;
+  // A warning about the block being run (Options::warning); under Options::strict an error.
+  void warn(std::uint32_t column, const std::string& message) const;
+  // The block being run was joined from these lines (set after at(), which clears it).
+  void continued(std::vector<LineSegment> segments) { segments_ = std::move(segments); }
 
   // The tool number for a tool called by name (Siemens T="name", Heidenhain TOOL CALL "name"):
   // the tool list's tool of that name, else a number given in order of first use (said in a
@@ -78,6 +87,7 @@ class DialectMachine {
   std::string no_file_;
   std::uint32_t line_ = 0;
   std::vector<std::string> unlisted_tool_names_;
+  std::vector<LineSegment> segments_;
 };
 
 }  // namespace ncbridge::interpreter::lowering

@@ -24,6 +24,9 @@ struct Item {
   char mode = 0;                    // 'A' for =AC(..), 'I' for =IC(..)
   std::vector<ExprRef> arguments;   // Call: kNoExpr for an empty argument
   std::string text;                 // Keyword operand (label), string argument (MSG, T="name")
+  // MSG("Depth " << R1 << " mm"): the parts of a string expression, text or a value (kNoExpr
+  // marks a text part)
+  std::vector<std::pair<std::string, ExprRef>> message;
   std::uint32_t column = 0;
 };
 
@@ -42,6 +45,9 @@ struct SBlock {
   std::uint32_t control_column = 0;
   std::string for_variable;  // the variable's parameter key (_r1, _v_name)
   ExprRef for_from = kNoExpr, for_to = kNoExpr;
+  // PROC NAME(INT A, REAL B) (control "PROC"): the parameter names in order; EXTERN
+  // declarations (control "EXTERN") declare nothing a reading needs
+  std::vector<std::string> proc_parameters;
 };
 
 inline std::string up(std::string_view s) {
@@ -170,7 +176,9 @@ class Reader {
       std::size_t r = q;
       while (r < s_.size() && s_[r] == ' ') ++r;
       bool assignment = q > p + 1 && r < s_.size() && s_[r] == '=' && (r + 1 >= s_.size() || s_[r + 1] != '=');
-      if (!assignment) {
+      // L140(2): a subprogram called with arguments, not the word L140
+      const bool call = q > p + 1 && r < s_.size() && s_[r] == '(';
+      if (!assignment && !call) {
         Item it;
         it.kind = Item::Kind::Word;
         it.name = std::string(1, lowering::upper(c));
@@ -191,6 +199,27 @@ class Reader {
     Item it;
     it.name = name;
     it.column = static_cast<std::uint32_t>(start + 1);
+    if ((name == "PROC" || name == "EXTERN") && out.items.empty() && out.control.empty()) {
+      declaration(out, name, it.column);
+      return;
+    }
+    if (name == "CALL" && pos_ < s_.size() && (s_[pos_] == '"' || ident_char(s_[pos_]))) {
+      // CALL "PART2" / CALL PART2: the named program, as a call of its name
+      std::size_t q = pos_;
+      if (s_[q] == '"') {
+        std::size_t close = s_.find('"', q + 1);
+        if (close == std::string_view::npos) fail(q, "Program name not closed by '\"'");
+        it.text = std::string(s_.substr(q + 1, close - q - 1));
+        pos_ = close + 1;
+      } else {
+        while (q < s_.size() && (ident_char(s_[q]) || s_[q] == '.')) ++q;
+        it.text = std::string(s_.substr(pos_, q - pos_));
+        pos_ = q;
+      }
+      it.kind = Item::Kind::Keyword;
+      out.items.push_back(it);
+      return;
+    }
     if (pos_ < s_.size() && s_[pos_] == '=' && (pos_ + 1 >= s_.size() || s_[pos_ + 1] != '=')) {
       ++pos_;
       skip();
@@ -225,12 +254,39 @@ class Reader {
           ++pos_;
           continue;
         }
-        if (s_[pos_] == '"') {
-          std::size_t close = s_.find('"', pos_ + 1);
-          if (close == std::string_view::npos) fail(pos_, "String not closed by '\"'");
-          it.text = std::string(s_.substr(pos_ + 1, close - pos_ - 1));
+        if (s_[pos_] == '"' || (name == "MSG" && it.arguments.empty())) {
+          // a string, or (MSG) a string expression: "text" << R1 << "text"
+          for (;;) {
+            skip();
+            if (pos_ < s_.size() && s_[pos_] == '"') {
+              std::size_t close = s_.find('"', pos_ + 1);
+              if (close == std::string_view::npos) fail(pos_, "String not closed by '\"'");
+              it.message.emplace_back(std::string(s_.substr(pos_ + 1, close - pos_ - 1)), kNoExpr);
+              pos_ = close + 1;
+            } else {
+              // the value runs to the next << (or the end of the argument): parsed on its own
+              std::size_t end = pos_;
+              int depth = 0;
+              while (end < s_.size()) {
+                const char ch = s_[end];
+                if (ch == '(') ++depth;
+                if (ch == ')' && depth-- == 0) break;
+                if ((ch == ',' && depth == 0) || (s_.substr(end, 2) == "<<" && depth == 0)) break;
+                ++end;
+              }
+              InfixParser parser(s_.substr(0, end), pos_, out.exprs, syntax_, *file_, line_);
+              it.message.emplace_back(std::string(), parser.expression());
+              pos_ = parser.position();
+            }
+            skip();
+            if (s_.substr(pos_, 2) != "<<") break;
+            pos_ += 2;
+          }
+          for (const auto& part : it.message) {
+            if (part.second == kNoExpr) it.text += part.first;
+          }
+          if (it.message.size() == 1 && it.message.front().second == kNoExpr) it.message.clear();
           it.arguments.push_back(kNoExpr);  // keeps the positions of the arguments after it
-          pos_ = close + 1;
         } else {
           it.arguments.push_back(expression(out.exprs));
         }
@@ -333,7 +389,45 @@ class Reader {
   }
 
  public:
-  std::set<std::string> declared_;  // names a DEF of this block declared
+  std::set<std::string> declared_;  // names a DEF (or PROC) of this block declared
+
+ private:
+  // PROC NAME(INT A, REAL B=5, VAR REAL C) SAVE / EXTERN NAME(INT, REAL): the names are
+  // declared as variables (the call binds them); types and the rest are not needed.
+  void declaration(SBlock& out, const std::string& keyword, std::uint32_t column) {
+    out.control = keyword;
+    out.control_column = column;
+    std::size_t open = s_.find('(', pos_);
+    if (open == std::string_view::npos) {
+      pos_ = s_.size();
+      return;
+    }
+    std::size_t close = s_.find(')', open);
+    if (close == std::string_view::npos) fail(open, "')' missing in " + keyword);
+    if (keyword == "PROC") {
+      std::string_view list = s_.substr(open + 1, close - open - 1);
+      std::size_t i = 0;
+      while (i < list.size()) {
+        std::size_t comma = list.find(',', i);
+        if (comma == std::string_view::npos) comma = list.size();
+        std::string_view part = list.substr(i, comma - i);
+        std::size_t eq = part.find('=');
+        if (eq != std::string_view::npos) part = part.substr(0, eq);
+        while (!part.empty() && (part.back() == ' ' || part.back() == '\t')) part.remove_suffix(1);
+        std::size_t b = part.size();
+        while (b > 0 && ident_char(part[b - 1])) --b;
+        std::string name = up(part.substr(b));
+        if (!name.empty()) {
+          out.proc_parameters.push_back(name);
+          declared_.insert(name);
+        }
+        i = comma + 1;
+      }
+    }
+    pos_ = s_.size();  // SAVE, DISPLOF and the like follow: nothing a reading needs
+  }
+
+ public:
 
  private:
   const std::set<std::string>& variables_;

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -32,13 +34,28 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct File {
   ProgramText text;
-  std::map<std::string, std::size_t> labels;
+  std::map<std::string, std::vector<std::size_t>> labels;  // a label may be written again further on
 };
+
+// What a ShopMill step is, for the message that refuses it.
+std::string shopmill_step_name(const std::string& step) {
+  static const std::map<std::string, std::string> kNames = {
+      {"E_MI_PL", "face milling"}, {"E_DR", "drilling"}, {"E_DR_BGF", "boring"}, {"E_DR_REA", "reaming"},
+      {"E_DR_SIN", "centring"}, {"E_DR_TAP", "tapping"}, {"E_DR_O1", "deep hole drilling"},
+      {"E_PS_XYZ", "positions"}, {"E_PS_POL", "positions on a circle"}, {"E_PS_CIR", "positions on a circle"},
+      {"E_PS_MRX", "position matrix"}, {"E_PS_FRA", "position frame"}, {"E_PS_SEQ", "position row"},
+      {"E_PS_ROW", "position row"}, {"E_PS_HIN", "obstacle"}, {"E_CON", "contour"}, {"E_MI_CON", "contour milling"},
+      {"E_MI_TR", "path milling"}, {"E_PO_REC", "rectangular pocket"}, {"E_PO_CIR", "circular pocket"},
+      {"E_SL_LON", "longitudinal slot"}, {"E_SL_CIR", "circumferential slot"}, {"E_CONFIG", "configuration"},
+      {"E_TR_ORI", "zero offset"}, {"E_TR_OFF", "zero offset"}, {"E_MI_TXT", "engraving"}};
+  auto it = kNames.find(step);
+  return it == kNames.end() ? "a ShopMill step" : it->second;
+}
 
 class Runner {
  public:
   Runner(const Options& options, canonical::Sink& sink)
-      : options_(options), table_(lowering::load_dialect_table("siemens840d")), m_(options, sink), reader_(variables_) {}
+      : options_(options), table_(lowering::load_dialect_table("siemens840d")), m_(options, sink, table_), reader_(variables_) {}
   void run(ProgramText program);
 
  private:
@@ -54,7 +71,11 @@ class Runner {
     return evaluate(b.exprs, ref, m_.parameters(), m_.file_name());
   }
   void jump(const std::string& label, const std::string& how, std::uint32_t column);
-  void call_subprogram(const std::string& name, int repeats, std::uint32_t column);
+  void call_subprogram(const std::string& name, int repeats, std::uint32_t column,
+                       const std::vector<std::optional<double>>& arguments = {});
+  std::optional<std::filesystem::path> subprogram_file(const std::string& name) const;
+  void bind_parameters(std::size_t file, const std::vector<std::optional<double>>& arguments, std::uint32_t column);
+  std::string message_text(const Item& msg, const SBlock& b);
   bool return_from_subprogram();
   void cycle(const Item& call, const SBlock& b, bool modal_call);
   void hole_pattern(const Item& call, const SBlock& b);
@@ -112,7 +133,7 @@ std::size_t Runner::add_file(ProgramText text) {
     }
     std::size_t q = p;
     while (q < l.size() && ident_char(l[q])) ++q;
-    if (q > p && q == colon && lowering::is_alpha(l[p])) f.labels.emplace(up(l.substr(p, q - p)), i);
+    if (q > p && q == colon && lowering::is_alpha(l[p])) f.labels[up(l.substr(p, q - p))].push_back(i);
   }
   files_.push_back(std::move(f));
   std::size_t index = files_.size() - 1;
@@ -163,37 +184,100 @@ bool Runner::step() {
   return run_block(b);
 }
 
+// GOTOF searches forward from the block for the label, GOTOB backward, GOTO (and GOTOC) forward
+// and then backward: a label written in several sections is the nearest one that way.
 void Runner::jump(const std::string& label, const std::string& how, std::uint32_t column) {
   const File& f = files_[file_];
   auto it = f.labels.find(label);
   if (it == f.labels.end()) m_.fail(column, how + " " + label + ": no label " + label + ": in this program");
-  std::size_t here = pc_ - 1;
-  if (how == "GOTOF" && it->second <= here) m_.fail(column, "GOTOF " + label + ": the label is not after this block");
-  if (how == "GOTOB" && it->second >= here) m_.fail(column, "GOTOB " + label + ": the label is not before this block");
-  pc_ = it->second;
+  const std::size_t here = pc_ - 1;
+  std::optional<std::size_t> forward, backward;
+  for (std::size_t line : it->second) {
+    if (line > here && !forward) forward = line;
+    if (line < here) backward = line;
+  }
+  if (how == "GOTOF" && !forward) m_.fail(column, "GOTOF " + label + ": the label is not after this block");
+  if (how == "GOTOB" && !backward) m_.fail(column, "GOTOB " + label + ": the label is not before this block");
+  if (how == "GOTOB") pc_ = *backward;
+  else if (forward) pc_ = *forward;
+  else if (backward) pc_ = *backward;
+  else m_.fail(column, how + " " + label + ": the label is this block");
 }
 
-void Runner::call_subprogram(const std::string& name, int repeats, std::uint32_t column) {
-  if (calls_.size() >= 16) m_.fail(column, "Too many nested subprogram calls");
+std::optional<std::filesystem::path> Runner::subprogram_file(const std::string& name) const {
   std::vector<std::filesystem::path> dirs = options_.subroutine_path;
+  dirs.push_back(std::filesystem::path(files_[file_].text.name).parent_path());
   dirs.push_back(std::filesystem::path(files_[0].text.name).parent_path());
   for (const auto& dir : dirs) {
     for (const char* ext : {".SPF", ".spf", ".MPF", ".mpf", ""}) {
       std::filesystem::path candidate = (dir.empty() ? std::filesystem::path(".") : dir) / (name + ext);
       std::error_code ec;
-      if (!std::filesystem::is_regular_file(candidate, ec)) continue;
-      std::size_t index = files_.size();
-      for (std::size_t i = 0; i < files_.size(); ++i) {
-        if (files_[i].text.name == candidate.string()) index = i;
-      }
-      if (index == files_.size()) index = add_file(ProgramText::from_file(candidate));
-      calls_.push_back(Call{file_, pc_, 0, repeats - 1});
-      file_ = index;
-      pc_ = 0;
-      return;
+      if (std::filesystem::is_regular_file(candidate, ec)) return candidate;
     }
   }
-  m_.fail(column, "Subprogram " + name + " not found (" + name + ".SPF in the subroutine path or beside the program)");
+  return std::nullopt;
+}
+
+void Runner::call_subprogram(const std::string& name, int repeats, std::uint32_t column,
+                             const std::vector<std::optional<double>>& arguments) {
+  if (calls_.size() >= 16) m_.fail(column, "Too many nested subprogram calls");
+  const auto candidate = subprogram_file(name);
+  if (!candidate) {
+    m_.fail(column, "Subprogram " + name + " not found (" + name + ".SPF in the subroutine path or beside the program)");
+  }
+  std::size_t index = files_.size();
+  for (std::size_t i = 0; i < files_.size(); ++i) {
+    if (files_[i].text.name == candidate->string()) index = i;
+  }
+  if (index == files_.size()) index = add_file(ProgramText::from_file(*candidate));
+  bind_parameters(index, arguments, column);
+  calls_.push_back(Call{file_, pc_, 0, repeats - 1});
+  file_ = index;
+  pc_ = 0;
+}
+
+// The called program's PROC NAME(INT A, REAL B) takes the call's arguments in order; an argument
+// left out keeps the parameter at 0 (the control's default for an unassigned value).
+void Runner::bind_parameters(std::size_t file, const std::vector<std::optional<double>>& arguments,
+                             std::uint32_t column) {
+  const ProgramText& text = files_[file].text;
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < text.size() && i < 64; ++i) {
+    std::string_view l = text.line(i);
+    std::size_t p = 0;
+    while (p < l.size() && (l[p] == ' ' || l[p] == '\t')) ++p;
+    if (p >= l.size() || l[p] == ';') continue;
+    SBlock proc;
+    reader_.declared_.clear();
+    reader_.read(l, static_cast<std::uint32_t>(i + 1), text.name, proc);
+    if (proc.control == "PROC") names = proc.proc_parameters;
+    break;
+  }
+  if (arguments.size() > names.size()) {
+    m_.fail(column, "Call with " + std::to_string(arguments.size()) + " arguments: " + text.name + " declares " +
+                        std::to_string(names.size()) + " (PROC)");
+  }
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    variables_.insert(names[i]);
+    const double v = i < arguments.size() && arguments[i] ? *arguments[i] : 0.0;
+    m_.parameters().set_named(Reader::variable_key(names[i]), v);
+  }
+}
+
+std::string Runner::message_text(const Item& msg, const SBlock& b) {
+  if (msg.message.empty()) return msg.text;
+  std::string text;
+  for (const auto& [part, value] : msg.message) {
+    if (value == kNoExpr) {
+      text += part;
+      continue;
+    }
+    const double v = eval(b, value);
+    char number[64];
+    std::snprintf(number, sizeof number, "%.6g", v);
+    text += number;
+  }
+  return text;
 }
 
 bool Runner::return_from_subprogram() {
@@ -236,11 +320,14 @@ bool Runner::run_block(SBlock& b) {
   std::vector<const Item*> gs, ms;
   bool supa = false, g53 = false, cip = false, ct = false;
   std::optional<std::string> frame_op;
+  std::uint32_t frame_column = 1;
   const Item* cycle_call = nullptr;
   const Item* pattern_call = nullptr;
   const Item* milling_call = nullptr;
   bool mcall = false, program_return = false;
   std::string subprogram;
+  std::vector<std::optional<double>> sub_arguments;
+  bool shopmill_end = false;
   std::optional<std::string> goto_label, goto_how;
   std::uint32_t goto_column = 0, sub_column = 0;
   for (const Item& it : b.items) {
@@ -263,7 +350,24 @@ bool Runner::run_block(SBlock& b) {
       case Item::Kind::Call: {
         const std::string& n = it.name;
         if (n == "MSG") {
-          if (!it.text.empty()) m_.message(it.text);
+          const std::string text = message_text(it, b);
+          if (!text.empty()) m_.message(text);
+        } else if (n == "E_HEAD") {
+          // the ShopMill step program's header (blank, retraction plane, safety clearance):
+          // it moves nothing; the steps that would use it are refused below
+          m_.comment("ncbridge: ShopMill program header E_HEAD read (no motion)");
+        } else if (n == "E_END") {
+          shopmill_end = true;
+        } else if ((n.rfind("E_", 0) == 0 || n.rfind("F_", 0) == 0) && n.size() > 2) {
+          m_.fail(it.column, "ShopMill step " + n + " (" + shopmill_step_name(n) +
+                                 "): the positional parameters of ShopMill's steps are not published, and "
+                                 "ncbridge does not guess them (save the program as G code from ShopMill, or "
+                                 "post it with CYCLE61/CYCLE81-89/POCKET3/4 and explicit moves)");
+        } else if (n == "CYCLE832") {
+          // high speed settings: the first parameter is the contour tolerance (0: deselect)
+          const double tolerance = !it.arguments.empty() && it.arguments[0] != kNoExpr ? eval(b, it.arguments[0]) : 0.0;
+          nb.g(64, it.column);
+          if (tolerance > 0) nb.add('p', tolerance, it.column);
         } else if (table_.cycles.count(n)) {
           cycle_call = &it;
         } else if (table_.patterns.count(n)) {
@@ -285,8 +389,16 @@ bool Runner::run_block(SBlock& b) {
           }
         } else if (std::find(table_.ignored_calls.begin(), table_.ignored_calls.end(), n) != table_.ignored_calls.end()) {
           // no effect on the canonical toolpath
+        } else if (subprogram_file(n)) {
+          // NAME(3600, 600), L140(2): a subprogram with PROC parameters
+          subprogram = n;
+          sub_column = it.column;
+          for (ExprRef a : it.arguments) {
+            sub_arguments.push_back(a == kNoExpr ? std::nullopt : std::optional<double>(eval(b, a)));
+          }
         } else {
-          m_.fail(it.column, n + "(...) is not a call ncbridge supports");
+          m_.fail(it.column, n + "(...) is neither a cycle ncbridge supports nor a subprogram file " + n +
+                                 ".SPF in the subroutine path or beside the program");
         }
         break;
       }
@@ -295,7 +407,10 @@ bool Runner::run_block(SBlock& b) {
         if (n == "SUPA") supa = true;
         else if (n == "CIP") cip = true;
         else if (n == "CT") ct = true;
-        else if (n == "TRANS" || n == "ATRANS" || n == "ROT" || n == "AROT") frame_op = n;
+        else if (n == "TRANS" || n == "ATRANS" || n == "ROT" || n == "AROT") {
+          frame_op = n;
+          frame_column = it.column;
+        }
         else if (n == "MCALL") mcall = true;
         else if (n == "RET") program_return = true;
         else if (n == "GOTOF" || n == "GOTOB" || n == "GOTO" || n == "GOTOC") {
@@ -306,6 +421,10 @@ bool Runner::run_block(SBlock& b) {
           incremental_ = n == "G91";
         } else if (std::find(table_.ignored_calls.begin(), table_.ignored_calls.end(), n) != table_.ignored_calls.end()) {
         } else if (n == "DEF") {
+        } else if (n == "CALL") {
+          if (it.text.empty()) m_.fail(it.column, "CALL needs a program name");
+          subprogram = it.text;
+          sub_column = it.column;
         } else if (subprogram.empty() && n.size() > 0) {
           subprogram = n;  // a named subprogram call: PART1
           sub_column = it.column;
@@ -411,7 +530,13 @@ bool Runner::run_block(SBlock& b) {
     } else {
       std::optional<double> angle = v("RPL");
       if (!angle) angle = v("Z");
-      if (v("X") || v("Y")) m_.fail(1, *frame_op + " about X or Y (a tilted plane) is not supported");
+      for (const char* axis : {"X", "Y"}) {
+        if (auto a = v(axis); a && *a != 0) {
+          m_.fail(frame_column, *frame_op + " " + axis + ": the working plane turned about " + axis +
+                                    " (an angle head or a swivelled spindle) is not supported: ncbridge converts "
+                                    "three-axis machining with the tool along Z");
+        }
+      }
       if (*frame_op == "ROT") m_.frame = lowering::Frame{{0, 0, 0}, angle.value_or(0)};
       else m_.frame.rotation_deg += angle.value_or(0);
     }
@@ -590,8 +715,14 @@ bool Runner::run_block(SBlock& b) {
   if (!subprogram.empty()) {
     int repeats = 1;
     if (auto p = value_of("P")) repeats = static_cast<int>(std::lround(*p));
-    call_subprogram(subprogram, repeats, sub_column);
+    call_subprogram(subprogram, repeats, sub_column, sub_arguments);
     return true;
+  }
+  if (shopmill_end) {
+    // E_END: the end of the ShopMill step program
+    NeutralBlock end;
+    end.m(30, col);
+    return !m_.execute(end);
   }
   if (program_return) return return_from_subprogram();
   return true;
@@ -637,7 +768,9 @@ bool Runner::run_control(SBlock& b) {
   auto top_is = [&](const char* kind) {
     return !structures_.empty() && structures_.back().kind == kind && structures_.back().file == file_;
   };
-  if (c == "ELSE") {
+  if (c == "PROC" || c == "EXTERN") {
+    // PROC: the parameters were bound by the call; EXTERN declares a called program's signature
+  } else if (c == "ELSE") {
     // the IF branch ran to here: on after the ENDIF
     skip_structure({"IF"}, {"ENDIF"}, col);
   } else if (c == "ENDIF") {
