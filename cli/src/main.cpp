@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   ncbridge::cli::add_check_command(app, exit_code);
   ncbridge::cli::add_convert_command(app, exit_code);
   ncbridge::cli::add_diff_command(app, exit_code);
+  ncbridge::cli::add_optimize_command(app, exit_code);
 #ifdef NCBRIDGE_HAVE_SERVICES
   ncbridge::cli::add_up_command(app, exit_code);
   ncbridge::cli::add_submit_command(app, exit_code);
