@@ -66,7 +66,9 @@ TEST_P(ArcsCorpus, WithinTheBandAndAtMostArcWeldersBlocks) {
   request.output_name = file;
   request.optimizer.tolerance_mm = tolerance;
   std::string output;
-  const OptimizeResult result = optimize(request, [&](std::string_view chunk) { output.append(chunk); });
+  OutputSinks sinks;
+  sinks.main = [&](std::string_view chunk) { output.append(chunk); };
+  const OptimizeResult result = optimize(request, sinks);
   ASSERT_TRUE(result.deviation.has_value());
   const DeviationReport& d = *result.deviation;
   EXPECT_TRUE(d.passed(tolerance)) << d.largest() << (d.problems.empty() ? "" : " " + d.problems.front());
@@ -87,12 +89,39 @@ TEST_P(ArcsCorpus, WithinTheBandAndAtMostArcWeldersBlocks) {
             << " motion blocks, " << result.stats.arcs << " arcs, largest deviation " << d.largest() << "\n";
 }
 
+// The same files to KUKA KRL with loops: the .src read back by the KRL reader stays in the band.
+class ArcsCorpusKrl : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ArcsCorpusKrl, ReadsBackWithinTheBand) {
+  OptimizeRequest request;
+  request.input = kArcs / GetParam();
+  request.output_name = GetParam() + ".src";
+  request.output = OutputFormat::Krl;
+  request.loops = true;
+  std::string src, dat;
+  OutputSinks sinks;
+  sinks.main = [&](std::string_view chunk) { src.append(chunk); };
+  sinks.data = [&](std::string_view chunk) { dat.append(chunk); };
+  const OptimizeResult result = optimize(request, sinks);
+  ASSERT_TRUE(result.deviation.has_value());
+  EXPECT_TRUE(result.deviation->passed(0.025)) << result.deviation->largest();
+  EXPECT_LT(result.deviation->extrusion_error, 1e-4);
+  EXPECT_LE(result.motion_blocks_out, result.motion_blocks_in + 2);  // PTP home at both ends
+  EXPECT_NE(dat.find("ENDDAT"), std::string::npos);
+  std::cout << GetParam() << " to KRL: " << result.motion_blocks_in << " -> " << result.motion_blocks_out
+            << " motion statements, " << result.loops.loops << " loops\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, ArcsCorpusKrl, ::testing::ValuesIn(printer_files()), [](const auto& test) {
+  return test.param.substr(0, test.param.find('.'));
+});
+
 INSTANTIATE_TEST_SUITE_P(Files, ArcsCorpus,
                          ::testing::Combine(::testing::ValuesIn(printer_files()), ::testing::Values(0.025, 0.005)),
-                         [](const auto& info) {
-                           std::string name = std::get<0>(info.param);
+                         [](const auto& test) {
+                           std::string name = std::get<0>(test.param);
                            name = name.substr(0, name.find('.'));
-                           return name + (std::get<1>(info.param) == 0.025 ? "_25um" : "_5um");
+                           return name + (std::get<1>(test.param) == 0.025 ? "_25um" : "_5um");
                          });
 
 }  // namespace

@@ -48,6 +48,25 @@ TEST_F(OptimizeCli, WritesTheProgramAndTheReport) {
   EXPECT_GT(j["time_ms"]["total"].get<double>(), 0);
 }
 
+TEST_F(OptimizeCli, KrlOutputIsASrcAndItsDat) {
+  const auto src = dir_ / "cylinder.src";
+  const auto run = run_program({NCBRIDGE_EXECUTABLE, "optimize", kCylinder, "--flavor", "marlin", "--to", "krl", "--loops",
+                                "-o", src.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string text = testing::read_file(src), dat = testing::read_file(dir_ / "cylinder.dat");
+  EXPECT_NE(text.find("DEF CYLINDER( )"), std::string::npos);
+  EXPECT_NE(text.find("FOR NCB_LAYER = 1 TO "), std::string::npos);
+  EXPECT_NE(dat.find("DEFDAT CYLINDER PUBLIC"), std::string::npos);
+  EXPECT_NE(run.err.find(" loops, largest deviation"), std::string::npos) << run.err;
+  // Not a .src: refused, neither file written.
+  const auto bad = run_program({NCBRIDGE_EXECUTABLE, "optimize", kCylinder, "--flavor", "marlin", "--to", "krl",
+                                "-o", (dir_ / "other.krl").string()});
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.err.find("KRL output is a .src file"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir_ / "other.krl"));
+  EXPECT_FALSE(fs::exists(dir_ / "other.dat"));
+}
+
 TEST_F(OptimizeCli, BadArgumentsAndBadInputLeaveNoOutput) {
   const auto good = write("part.gcode", "G1 X0 Y0 F1800\nG1 X1 Y0 E0.1\nG1 X2 Y0 E0.2\n");
   const auto bad = write("bad.gcode", "G28\nG1 X0 Y0\nG1 X1.2.3 Y4 E1\n");
@@ -61,6 +80,8 @@ TEST_F(OptimizeCli, BadArgumentsAndBadInputLeaveNoOutput) {
       {{"optimize", good.string(), "--flavor", "marlin", "--tolerance", "0", "-o", out.string()}, "--tolerance must be greater than 0"},
       {{"optimize", good.string(), "--flavor", "marlin", "--tolerance", "-0.1", "-o", out.string()}, "--tolerance must be greater than 0"},
       {{"optimize", bad.string(), "--flavor", "marlin", "-o", out.string()}, bad.string() + ":3:4: error: X word without a valid number"},
+      {{"optimize", good.string(), "--flavor", "marlin", "--loops", "-o", out.string()}, "printer G-code has no loop construct"},
+      {{"optimize", good.string(), "--flavor", "marlin", "--to", "heidenhain-ish", "-o", out.string()}, "unknown --to"},
   };
   for (const auto& c : cases) {
     std::vector<std::string> argv = {NCBRIDGE_EXECUTABLE};

@@ -276,14 +276,22 @@ DeviationReport check_deviation(const std::vector<PathPiece>& input, const std::
       auto span_distance = [&](Vec3 p) {
         return nearest_in(p, near >= 2 ? near - 2 : 0, std::min(span.size(), near + 9));
       };
-      // On [f0, f1] the output lies within chord_deviation(f0, f1) of its chord, and the
-      // distance to one input line is convex along the chord, so no point of that piece is
-      // farther from the span than max(d_j(p0), d_j(p1)) + chord_deviation for any input line
-      // j (an input arc counts with the same bound over its own chord). Samples at the input
-      // vertices' places along the output, halfway between them, and 1 mm apart; an interval
-      // whose bound exceeds the band is halved until it does not.
+      // Against input lines: on [f0, f1] the output lies within chord_deviation(f0, f1) of its
+      // chord, and the distance to one input line is convex along the chord, so no point of
+      // that piece is farther from the span than max(d_j(p0), d_j(p1)) + chord_deviation for any
+      // input line j. Samples at the input vertices' places along the output, halfway between
+      // them, and 1 mm apart; an interval whose bound exceeds the band is halved until it does
+      // not.
+      bool span_has_arcs = false;
+      for (const Shape& piece : span) span_has_arcs = span_has_arcs || piece.arc;
+      if (span_has_arcs) {
+        // Against input arcs: sampled, with the 1-Lipschitz bound between samples.
+        sweep(out, span_distance, tol, step, out_to_in, left_band);
+      }
       std::vector<double> at{0.0, 1.0};
-      for (const Shape& piece : span) at.push_back(out.fraction_of(piece.b));
+      if (!span_has_arcs) {
+        for (const Shape& piece : span) at.push_back(out.fraction_of(piece.b));
+      }
       std::sort(at.begin(), at.end());
       const std::size_t vertices = at.size();
       for (std::size_t q = 1; q < vertices; ++q) at.push_back((at[q - 1] + at[q]) / 2);
@@ -294,9 +302,7 @@ DeviationReport check_deviation(const std::vector<PathPiece>& input, const std::
       auto bound = [&](double f0, double f1, std::size_t lo, std::size_t hi) {
         const Vec3 p0 = out.at(f0), p1 = out.at(f1);
         double best = 1e300;
-        for (std::size_t j = lo; j < hi; ++j) {
-          best = std::min(best, std::max(span[j].distance_from(p0), span[j].distance_from(p1)) + span[j].chord_deviation(0, 1));
-        }
+        for (std::size_t j = lo; j < hi; ++j) best = std::min(best, std::max(span[j].distance_from(p0), span[j].distance_from(p1)));
         return best + out.chord_deviation(f0, f1);
       };
       long budget = 200000;  // halvings per span: past it the band counts as left (undecided)
@@ -316,7 +322,7 @@ DeviationReport check_deviation(const std::vector<PathPiece>& input, const std::
       double previous = 0, d_previous = span_distance(out.a);
       std::size_t near_previous = near;
       out_to_in = std::max(out_to_in, d_previous);
-      for (std::size_t q = 1; q < at.size(); ++q) {
+      for (std::size_t q = 1; q < at.size() && !span_has_arcs; ++q) {
         if (at[q] <= previous) continue;
         for (double f = std::min(at[q], previous + spacing);; f = std::min(at[q], f + spacing)) {
           const double d = span_distance(out.at(f));

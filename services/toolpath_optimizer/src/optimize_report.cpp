@@ -11,7 +11,7 @@ std::string report_json(const OptimizeRequest& request, const OptimizeResult& r)
   report["input"] = request.input.string();
   report["output"] = request.output_name;
   report["flavor"] = std::string(printer_flavor_name(request.flavor));
-  report["to"] = "gcode";
+  report["to"] = request.output == OutputFormat::Krl ? "krl" : "gcode";
   report["tolerance_mm"] = request.optimizer.tolerance_mm;
   report["min_segment_mm"] = request.optimizer.min_segment_mm;
   report["input_counts"] = {{"bytes", r.bytes_in}, {"lines", r.lines_in}, {"commands", r.commands_in},
@@ -21,7 +21,7 @@ std::string report_json(const OptimizeRequest& request, const OptimizeResult& r)
   report["motion_block_reduction"] =
       r.motion_blocks_in ? 1.0 - double(r.motion_blocks_out) / double(r.motion_blocks_in) : 0.0;
   report["made"] = {{"arcs", r.stats.arcs}, {"merged_lines", r.stats.lines_merged}, {"folded_moves", r.stats.folded},
-                    {"loops", 0}};
+                    {"loops", r.loops.loops}, {"layers_in_loops", r.loops.layers_in_loops}};
   if (r.deviation) {
     const DeviationReport& d = *r.deviation;
     json layers = json::array();

@@ -1,6 +1,7 @@
 // optimize(): front-end -> optimizer -> writer, with the checker on both ends (pipeline.hpp).
 #include "ncbridge/toolpath_optimizer/pipeline.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -59,27 +60,62 @@ double seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 
 }  // namespace
 
-OptimizeResult optimize(const OptimizeRequest& request, const std::function<void(std::string_view)>& output) {
+OptimizeResult optimize(const OptimizeRequest& request, const OutputSinks& output) {
   const auto t0 = Clock::now();
   OptimizeResult result;
   if (!(request.optimizer.tolerance_mm > 0)) {
     throw InputError({request.input.string(), 0, 0}, "the tolerance must be greater than 0");
   }
+  if (request.loops && request.output == OutputFormat::PrinterGcode) {
+    throw InputError({request.input.string(), 0, 0}, "printer G-code has no loop construct: --loops needs --to krl or a CNC dialect");
+  }
+  const bool krl = request.output == OutputFormat::Krl;
+  OptimizerOptions optimizer_options = request.optimizer;
+  KrlOptions krl_options = request.krl;
+  if (krl) {
+    // CIRC is a plane circle through an auxiliary point written with krl.decimals.
+    optimizer_options.helical = false;
+    optimizer_options.margin_mm = std::max(optimizer_options.margin_mm, 3 * std::pow(10.0, -krl_options.decimals));
+    krl_options.extruder = true;
+    krl_options.approximation_mm = request.optimizer.tolerance_mm;
+    if (krl_options.source.empty()) krl_options.source = request.input.filename().string();
+  }
+
   PathRecorder input_path, output_path;
   PathRecorder* in_rec = request.check ? &input_path : nullptr;
-  // The written text, read back by the printer front-end as it comes.
-  std::unique_ptr<PrinterReader> back;
-  if (request.check) back = std::make_unique<PrinterReader>(request.output_name, request.flavor, output_path);
   Clock::duration check_time{};
-  PrinterWriter writer([&](std::string_view chunk) {
-    output(chunk);
-    if (back) {
-      const auto t = Clock::now();
-      back->text(chunk);
-      check_time += Clock::now() - t;
-    }
-  });
-  Optimizer optimizer(request.optimizer, writer);
+  // The written text, read back by the output's own front-end: printer lines as they come, the
+  // KRL program when it is whole.
+  std::unique_ptr<PrinterReader> back;
+  std::string krl_text;
+  if (request.check && !krl) back = std::make_unique<PrinterReader>(request.output_name, request.flavor, output_path);
+  auto out_main = [&](std::string_view chunk) {
+    output.main(chunk);
+    if (!request.check) return;
+    const auto t = Clock::now();
+    if (back) back->text(chunk);
+    else krl_text.append(chunk);
+    check_time += Clock::now() - t;
+  };
+  std::unique_ptr<ElementSink> writer;
+  PrinterWriter* printer_writer = nullptr;
+  KrlWriter* krl_writer = nullptr;
+  if (krl) {
+    auto w = std::make_unique<KrlWriter>(krl_options, out_main, output.data);
+    krl_writer = w.get();
+    writer = std::move(w);
+  } else {
+    auto w = std::make_unique<PrinterWriter>(out_main);
+    printer_writer = w.get();
+    writer = std::move(w);
+  }
+  std::unique_ptr<LoopDetector> loops;
+  ElementSink* after_optimizer = writer.get();
+  if (request.loops) {
+    loops = std::make_unique<LoopDetector>(request.loop, *writer);
+    after_optimizer = loops.get();
+  }
+  Optimizer optimizer(optimizer_options, *after_optimizer);
   Tee tee(optimizer, in_rec);
   Progress progress(tee, request.progress);
   const PrinterCounts in = read_printer_file(request.input, request.flavor, progress);
@@ -88,14 +124,22 @@ OptimizeResult optimize(const OptimizeRequest& request, const std::function<void
   result.commands_in = in.commands;
   result.motion_blocks_in = in.motion_blocks;
   result.arcs_in = in.arcs;
-  result.bytes_out = writer.bytes();
-  result.lines_out = writer.lines();
-  result.commands_out = writer.commands();
-  result.motion_blocks_out = writer.motion_blocks();
+  if (printer_writer) {
+    result.bytes_out = printer_writer->bytes();
+    result.lines_out = printer_writer->lines();
+    result.commands_out = printer_writer->commands();
+    result.motion_blocks_out = printer_writer->motion_blocks();
+  } else {
+    result.lines_out = krl_writer->lines();
+    result.commands_out = krl_writer->commands();
+    result.motion_blocks_out = krl_writer->motion_statements();
+  }
   result.stats = optimizer.stats();
-  if (back) {
+  if (loops) result.loops = loops->stats();
+  if (request.check) {
     const auto t = Clock::now();
-    back->finish();
+    if (back) back->finish();
+    else read_krl_text(krl_text, request.output_name, output_path);
     DeviationOptions options;
     options.tolerance = request.optimizer.tolerance_mm;
     result.deviation = check_deviation(input_path.pieces, output_path.pieces, options);
@@ -114,7 +158,7 @@ OptimizeResult optimize(const OptimizeRequest& request, const std::function<void
 
 std::string summary_line(const OptimizeRequest& request, const OptimizeResult& r) {
   char buffer[512];
-  const double reduction = r.motion_blocks_in ? 100.0 * (1.0 - double(r.motion_blocks_out) / double(r.motion_blocks_in)) : 0;
+  const double change = r.motion_blocks_in ? 100.0 * (double(r.motion_blocks_out) / double(r.motion_blocks_in) - 1.0) : 0;
   std::string deviation = "not checked";
   if (r.deviation) {
     char d[96];
@@ -122,11 +166,11 @@ std::string summary_line(const OptimizeRequest& request, const OptimizeResult& r
     deviation = d;
   }
   std::snprintf(buffer, sizeof buffer,
-                "optimize: %llu -> %llu motion blocks (-%.1f%%), %llu -> %llu commands, %llu arcs, %llu lines merged, %s, %.2f s",
+                "optimize: %llu -> %llu motion blocks (%+.1f%%), %llu -> %llu commands, %llu arcs, %llu lines merged, %llu loops, %s, %.2f s",
                 static_cast<unsigned long long>(r.motion_blocks_in), static_cast<unsigned long long>(r.motion_blocks_out),
-                reduction, static_cast<unsigned long long>(r.commands_in), static_cast<unsigned long long>(r.commands_out),
+                change, static_cast<unsigned long long>(r.commands_in), static_cast<unsigned long long>(r.commands_out),
                 static_cast<unsigned long long>(r.stats.arcs), static_cast<unsigned long long>(r.stats.lines_merged),
-                deviation.c_str(), r.optimize_seconds);
+                static_cast<unsigned long long>(r.loops.loops), deviation.c_str(), r.optimize_seconds);
   return buffer;
 }
 
