@@ -4,6 +4,7 @@
 // cannot hold (bosses, approach strategies, other feature kinds) is reported as a warning; a
 // file without a PROJECT, or with a reference to the wrong kind of entity, is an InputError
 // naming the instance's line.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -262,9 +263,77 @@ class Cc1Reader {
       c.segments.emplace_back(sn::Polyline{{on_line(t1), on_line(t2)}});
     }
   }
+  // B_SPLINE_CURVE_WITH_KNOTS, or the complex instance of it with RATIONAL_B_SPLINE_CURVE
+  // (and attribute-less supertypes): the only complex instance an ISO 14649 toolpath holds.
+  static bool is_bspline(const Instance& i) {
+    if (!i.complex) return i.entity() == "B_SPLINE_CURVE_WITH_KNOTS";
+    return i.record("B_SPLINE_CURVE") && i.record("B_SPLINE_CURVE_WITH_KNOTS") && i.record("RATIONAL_B_SPLINE_CURVE");
+  }
+  sn::BSplineCurve bspline(const Instance& i) const {
+    // The attributes of B_SPLINE_CURVE, then those of B_SPLINE_CURVE_WITH_KNOTS, then the weights.
+    std::vector<Value> a;
+    if (!i.complex) {
+      a = i.attributes();
+    } else {
+      static constexpr std::string_view kAllowed[] = {"BOUNDED_CURVE", "B_SPLINE_CURVE", "B_SPLINE_CURVE_WITH_KNOTS", "CURVE",
+                                                      "GEOMETRIC_REPRESENTATION_ITEM", "RATIONAL_B_SPLINE_CURVE",
+                                                      "REPRESENTATION_ITEM"};
+      for (const auto& r : i.records) {
+        if (std::find(std::begin(kAllowed), std::end(kAllowed), r.entity) == std::end(kAllowed)) {
+          fail_complex(i, "a complex B-spline curve with a " + r.entity + " part");
+        }
+      }
+      for (std::string_view part : {"B_SPLINE_CURVE", "B_SPLINE_CURVE_WITH_KNOTS", "RATIONAL_B_SPLINE_CURVE"}) {
+        const auto& attributes = i.record(part)->attributes;
+        a.insert(a.end(), attributes.begin(), attributes.end());
+      }
+    }
+    if (a.size() != (i.complex ? 10u : 9u)) fail_complex(i, "a B-spline curve with " + std::to_string(a.size()) + " attributes");
+    auto number_list = [&](const Value& v, const char* what) {
+      if (!v.is_list()) fail_complex(i, std::string(what) + " must be a list");
+      std::vector<double> out;
+      for (const Value& x : v.as_list()) {
+        if (!x.is_number()) fail_complex(i, std::string(what) + " must be numbers");
+        out.push_back(x.as_number());
+      }
+      return out;
+    };
+    sn::BSplineCurve b;
+    if (!a[1].is_integer()) fail_complex(i, "degree must be an integer");
+    const auto degree = a[1].as_integer();
+    if (degree < 1 || degree > 64) fail_complex(i, "degree " + std::to_string(degree) + " is not supported (1 to 64)");
+    b.degree = static_cast<int>(degree);
+    if (!a[2].is_list()) fail_complex(i, "control_points_list must be a list");
+    for (const Value& v : a[2].as_list()) b.control_points.push_back(point_ref(reference_in(v, i), i));
+    for (double m : number_list(a[6], "knot_multiplicities")) {
+      if (m != std::floor(m) || m < 0 || m > 1e6) fail_complex(i, "knot_multiplicities must be small whole numbers");
+      b.knot_multiplicities.push_back(static_cast<int>(m));
+    }
+    b.knots = number_list(a[7], "knots");
+    if (!a[8].is_enumeration()) fail_complex(i, "knot_spec must be an enumeration");
+    const std::string& spec = a[8].as_enumeration();
+    b.knot_spec = spec == "UNIFORM_KNOTS" ? sn::KnotType::UniformKnots
+                  : spec == "QUASI_UNIFORM_KNOTS" ? sn::KnotType::QuasiUniformKnots
+                  : spec == "PIECEWISE_BEZIER_KNOTS" ? sn::KnotType::PiecewiseBezierKnots
+                                                     : sn::KnotType::Unspecified;
+    if (i.complex) b.weights = number_list(a[9], "weights_data");
+    if (const std::string problem = sn::bspline_problem(b); !problem.empty()) fail_complex(i, "not a B-spline: " + problem);
+    return b;
+  }
+  [[noreturn]] void fail_complex(const Instance& at, const std::string& message) const {
+    throw InputError({file_, at.line, at.column},
+                     "#" + std::to_string(at.id) + " " + (at.complex ? std::string("(complex)") : at.entity()) + ": " + message);
+  }
+  // A curve of a toolpath: a B-spline (NURBS) curve, a POLYLINE, a TRIMMED_CURVE, or a
+  // COMPOSITE_CURVE of them.
   sn::CompositeCurve curve(InstanceId id, const Instance& from) const {
-    const Instance& i = expect(id, {"POLYLINE", "TRIMMED_CURVE", "COMPOSITE_CURVE"}, from);
+    const Instance& i = instance(id);
     sn::CompositeCurve c;
+    if (is_bspline(i)) {
+      c.segments.emplace_back(bspline(i));
+      return c;
+    }
+    expect(id, {"POLYLINE", "TRIMMED_CURVE", "B_SPLINE_CURVE_WITH_KNOTS", "COMPOSITE_CURVE"}, from);
     if (i.entity() == "POLYLINE") {
       c.segments.emplace_back(polyline(i));
     } else if (i.entity() == "TRIMMED_CURVE") {
@@ -273,7 +342,12 @@ class Cc1Reader {
       for (const Value& v : list(i, 1)) {
         const Instance& seg = expect(reference_in(v, i), {"COMPOSITE_CURVE_SEGMENT"}, i);
         if (!flag(seg, 1)) fail(seg, "a segment reversed (same_sense .F.) is not read");
-        const Instance& parent = expect(reference(seg, 2), {"POLYLINE", "TRIMMED_CURVE"}, seg);
+        const InstanceId parent_id = reference(seg, 2);
+        if (is_bspline(instance(parent_id))) {
+          c.segments.emplace_back(bspline(instance(parent_id)));
+          continue;
+        }
+        const Instance& parent = expect(parent_id, {"POLYLINE", "TRIMMED_CURVE", "B_SPLINE_CURVE_WITH_KNOTS"}, seg);
         if (parent.entity() == "POLYLINE") c.segments.emplace_back(polyline(parent));
         else append_trimmed(parent, c);
       }
@@ -691,8 +765,22 @@ class Cc1Reader {
       r.its_secplane = plane(reference(i, 1), i);
       if (!attr(i, 2).is_unset()) r.its_toolpath = toolpath_list(reference(i, 2), i);
       result_.project.main_workplan.its_elements.emplace_back(std::move(r));
+    } else if (i.entity() == "WORKPIECE_PROBING") {
+      sn::WorkpieceProbing w;
+      w.its_id = text(i, 0);
+      w.its_secplane = plane(reference(i, 1), i);
+      if (!attr(i, 2).is_unset()) warn(i, "the toolpath of a workpiece probing is not kept");
+      const Instance& variable = expect(reference(i, 4), {"NC_VARIABLE"}, i);
+      w.measured_offset.its_name = text(variable, 0);
+      w.measured_offset.initial_value = opt_number(variable, 1);
+      w.start_position = placement(reference(i, 5), i);
+      expect(reference(i, 6), {"WORKPIECE"}, i);  // the project's workpiece
+      w.its_direction = direction(reference(i, 7), i);
+      w.expected_value = toleranced(reference(i, 8), i);
+      w.its_probe = text(expect(reference(i, 9), {"TOUCH_PROBE"}, i), 0);
+      result_.project.main_workplan.its_elements.emplace_back(std::move(w));
     } else {
-      warn(i, "executable " + i.entity() + " is not read (only workingsteps and rapid movements)");
+      warn(i, "executable " + i.entity() + " is not read (only workingsteps, rapid movements and workpiece probings)");
     }
   }
 
