@@ -138,7 +138,10 @@ void Executor::arc(const BlockCommand& b, int motion, const Pose& end) {
     }
     double abs_err = std::fabs(r1 - r2);
     double rel_err = abs_err / std::max(r1, r2);
-    if (abs_err > spiral_abs || rel_err > kSpiralRelTolerance) {
+    // LinuxCNC also limits the relative difference; the other controls an absolute one only
+    // (Fanuc: parameter 3410), which small arcs of their posts rely on.
+    const bool relative_check = options_.dialect == Dialect::Rs274Ngc;
+    if (abs_err > spiral_abs || (relative_check && rel_err > kSpiralRelTolerance)) {
       char tail[128];
       std::snprintf(tail, sizeof tail, " r1=%.4f r2=%.4f abs_err=%.4g rel_err=%.4f%%", r1, r2, abs_err, rel_err * 100);
       fail(b.g_column[kGMotion], "Radius to end of arc differs from radius to start: " + where() + tail);
