@@ -107,7 +107,10 @@ ToolList parse_tool_list(std::string_view text, const std::string& file) {
                         .value_or(optional_number(node, "tip_angle", file).value_or(0));
     t.thread_pitch = optional_number(node, "thread_pitch", file).value_or(0);
     t.pocket = static_cast<int>(optional_number(node, "pocket", file).value_or(t.number));
-    for (const char* key : {"diameter", "length", "corner_radius", "flute_length"}) {
+    t.spindle_rpm = optional_number(node, "rpm", file).value_or(optional_number(node, "spindle_rpm", file).value_or(0));
+    t.feed = optional_number(node, "feed", file).value_or(0);
+    t.plunge_feed = optional_number(node, "plunge", file).value_or(optional_number(node, "plunge_feed", file).value_or(0));
+    for (const char* key : {"diameter", "length", "corner_radius", "flute_length", "rpm", "spindle_rpm", "feed", "plunge", "plunge_feed"}) {
       if (node[key] && node[key].as<double>() < 0) {
         throw InputError(location_of(node[key], file), std::string(key) + " must not be negative");
       }

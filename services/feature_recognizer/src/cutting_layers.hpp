@@ -10,23 +10,18 @@
 
 namespace ncbridge::feature_recognizer {
 
-struct ArcPiece {
-  Point2 center;
-  double radius = 0;
-  double sweep = 0;  // signed, radians (counter-clockwise > 0)
-  double z_start = 0, z_end = 0;
-};
-
 // Feed moves of one workingstep between two rapids, arcs as chords within the tolerance.
 struct CuttingPass {
   std::size_t workingstep = 0;  // the first; a pass runs on across workingsteps with no rapid between
-  std::vector<std::size_t> point_workingsteps;  // parallel to points: the workingstep of each
+  // The workingstep of each point, as runs: (first point, workingstep), ascending.
+  std::vector<std::pair<std::size_t, std::size_t>> workingstep_runs;
   std::size_t sequence = 0;     // position among all passes of the program
   std::vector<Point3> points;   // the polyline, first point = where the feed motion starts
-  std::vector<ArcPiece> arcs;   // the arcs among its moves
   double xy_length = 0;
   double z_min = 0, z_max = 0;
   bool z_only() const;          // a plunge: no motion in XY beyond 1 µm
+  // The workingsteps of the points [first, last), ascending, each once.
+  std::vector<std::size_t> workingsteps_of(std::size_t first, std::size_t last) const;
 };
 
 // One cutting level of one tool: the paths cut at that level, in order.
@@ -37,7 +32,6 @@ struct Layer {
   double z = 0;                            // the cutting level (lowest tool tip z)
   double z_top = 0;                        // highest z of its cutting moves (ramp entries)
   std::vector<std::vector<Point3>> paths;  // one per pass piece
-  std::vector<ArcPiece> arcs;
   double feed = 0, spindle_rpm = 0;
   bool freeform = false;                   // x, y and z vary together (3D surface machining)
   Region area;                             // the tool's swept region (filled in by the caller)

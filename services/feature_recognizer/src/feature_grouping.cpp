@@ -71,12 +71,14 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
     // the finishing allowance.
     bool attached = false;
     const auto near = fill_boxes[i] ? group_index.candidates(*fill_boxes[i]) : std::vector<std::size_t>{};
-    for (auto it = near.rbegin(); it != near.rend(); ++it) {
+    std::size_t compared = 0;
+    for (auto it = near.rbegin(); it != near.rend() && compared < kNearFeatureLimit; ++it) {
       const std::size_t g = *it;
       auto& group = groups[g];
       if (group.freeform != layer.freeform) continue;
       if (layer.z < group.floor - finishing_allowance) continue;
       if (!may_match(i, g)) continue;
+      ++compared;
       if (overlap_ratio(fills[i], group.filled) >= kSameFeatureOverlap) {
         add(g, true);
         attached = true;

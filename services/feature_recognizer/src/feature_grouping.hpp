@@ -30,6 +30,12 @@ inline constexpr double kSameFeatureOverlap = 0.5;
 // Cell of the box indexes that find the features near a layer or a cut, mm.
 inline constexpr double kIndexCell = 25.0;
 
+// Exact comparisons with earlier features are bounded: a layer, a feature or a cut is compared
+// exactly with at most this many of the latest earlier features near it (boxes overlapping, and
+// whatever cheap test the comparison has). A real part has a handful near each; a program of
+// random moves overlaps every feature with every other, and comparing all would be quadratic.
+inline constexpr std::size_t kNearFeatureLimit = 16;
+
 std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance);
 
 }  // namespace ncbridge::feature_recognizer

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <tuple>
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
 
 #include "cutting_layers.hpp"
 #include "feature_classification.hpp"
@@ -15,40 +16,61 @@
 namespace ncbridge::feature_recognizer {
 namespace {
 
-// Step-down layers repeat the same XY path: their swept region is computed once.
-using PathKey = std::tuple<long long, std::vector<long long>>;
+// Step-down layers repeat the same XY path: their swept region is computed once. A layer's key
+// is its tool and its XY paths relative to their first point, rounded to 0.1 µm: a path repeated
+// elsewhere (a pattern of equal pockets, step-downs) has the same key, and its swept area is the
+// cached one moved. The cache holds a hash of the key and the layer it was made for, whose key
+// is compared in full on a hit (no copy of every path's coordinates is kept).
+Point2 path_origin(const Layer& layer) {
+  for (const auto& path : layer.paths) {
+    if (!path.empty()) return {path.front().x, path.front().y};
+  }
+  return {};
+}
 
-// The layer's XY paths relative to their first point: a path repeated elsewhere (a pattern of
-// equal pockets, step-downs) has the same key, and its swept area is the cached one moved.
-PathKey path_key(const Layer& layer, Point2 origin) {
-  std::vector<long long> coords;
+template <typename Visit>
+void visit_key(const Layer& layer, Point2 origin, Visit visit) {
+  visit(std::llround(layer.tool.diameter * 1e4));
   for (const auto& path : layer.paths) {
     for (const auto& p : path) {
-      coords.push_back(std::llround((p.x - origin.x) * 1e4));
-      coords.push_back(std::llround((p.y - origin.y) * 1e4));
+      visit(std::llround((p.x - origin.x) * 1e4));
+      visit(std::llround((p.y - origin.y) * 1e4));
     }
-    coords.push_back(-(1LL << 62));  // path separator
+    visit(-(1LL << 62));  // path separator
   }
-  return {std::llround(layer.tool.diameter * 1e4), std::move(coords)};
+}
+
+std::uint64_t key_hash(const Layer& layer, Point2 origin) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  visit_key(layer, origin, [&](long long v) { h = (h ^ static_cast<std::uint64_t>(v)) * 0x100000001b3ull; });
+  return h;
+}
+
+bool same_key(const Layer& a, Point2 a_origin, const Layer& b, Point2 b_origin) {
+  std::vector<long long> ka, kb;
+  visit_key(a, a_origin, [&](long long v) { ka.push_back(v); });
+  visit_key(b, b_origin, [&](long long v) { kb.push_back(v); });
+  return ka == kb;
 }
 
 void compute_layer_areas(std::vector<Layer>& layers, double tolerance) {
-  std::map<PathKey, std::pair<Region, Point2>> cache;  // swept area, and the origin it was made at
-  for (auto& layer : layers) {
-    Point2 origin;
-    for (const auto& path : layer.paths) {
-      if (!path.empty()) {
-        origin = {path.front().x, path.front().y};
-        break;
-      }
+  std::unordered_multimap<std::uint64_t, std::size_t> cache;  // key hash -> the layer whose area it is
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    auto& layer = layers[i];
+    const Point2 origin = path_origin(layer);
+    const auto hash = key_hash(layer, origin);
+    std::optional<std::size_t> made;
+    for (auto [it, end] = cache.equal_range(hash); it != end && !made; ++it) {
+      if (same_key(layers[it->second], path_origin(layers[it->second]), layer, origin)) made = it->second;
     }
-    auto key = path_key(layer, origin);
-    auto it = cache.find(key);
-    if (it == cache.end()) {
-      it = cache.emplace(std::move(key), std::pair{swept_area(layer.xy_paths(), layer.tool.diameter / 2, tolerance), origin}).first;
+    if (made) {
+      const Point2 made_at = path_origin(layers[*made]);
+      const auto& area = layers[*made].area;
+      layer.area = made_at == origin ? area : area.translated(origin.x - made_at.x, origin.y - made_at.y);
+    } else {
+      layer.area = swept_area(layer.xy_paths(), layer.tool.diameter / 2, tolerance);
+      cache.emplace(hash, i);
     }
-    const auto& [area, made_at] = it->second;
-    layer.area = made_at == origin ? area : area.translated(origin.x - made_at.x, origin.y - made_at.y);
     if (auto box = layer.area.bbox()) layer.extent = *box;
   }
 }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <atomic>
 #include <mutex>
 
 namespace ncbridge::feature_recognizer {
@@ -198,8 +199,14 @@ struct Region::Impl {
 
   // Contours that cover at least the part of the region inside `near` (all of them for a small
   // region): what an operation with a region inside `near` needs.
+  // Tiles pay off for a region met again and again by small ones (a face, the band along the
+  // part's outline); a large region met a few times only (what earlier features removed near
+  // one) is used whole.
   Paths paths_near(const std::optional<Box2>& near) const {
     if (!tiled() || !near) return paths();
+    const double near_area = std::max(0.0, near->xmax - near->xmin) * std::max(0.0, near->ymax - near->ymin);
+    const double own_area = std::max(0.0, box->xmax - box->xmin) * std::max(0.0, box->ymax - box->ymin);
+    if (near_area >= 0.25 * own_area || small_queries_.fetch_add(1, std::memory_order_relaxed) < 8) return paths();
     const GridBox g = grid_box(*near);
     Paths out;
     for (const auto& tile : tiles()) {
@@ -281,6 +288,7 @@ struct Region::Impl {
   }
 
  private:
+  mutable std::atomic<int> small_queries_{0};  // operations with a region in a small part of this one's box
   mutable std::once_flag tiles_made_;
   mutable std::vector<Tile> tiles_;
 };
@@ -313,6 +321,17 @@ Region Region::union_of(const std::vector<Ring>& polygons) {
   return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
 }
 
+Region Region::from_winding(const std::vector<Ring>& curves) {
+  Paths paths;
+  paths.reserve(curves.size());
+  for (const auto& ring : curves) {
+    Path path = to_path(ring);
+    if (path.size() >= 3) paths.push_back(std::move(path));
+  }
+  if (paths.empty()) return Region();
+  return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
+}
+
 Region Region::from_polygons(const std::vector<PolygonWithHoles>& polygons) {
   Paths paths;
   for (const auto& pwh : polygons) {
@@ -328,6 +347,26 @@ Region Region::from_polygons(const std::vector<PolygonWithHoles>& polygons) {
     }
   }
   if (paths.empty()) return Region();
+  return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
+}
+
+Region Region::union_all(const std::vector<Region>& regions) {
+  std::vector<const Region*> parts;
+  for (const auto& r : regions) {
+    if (!r.empty()) parts.push_back(&r);
+  }
+  if (parts.empty()) return Region();
+  if (parts.size() == 1) return *parts.front();
+  if (parts.size() == 2) return parts[0]->united(*parts[1]);
+  // Each region winds once around its points (outer contours positive, holes negative), so the
+  // points where the sum of the windings is not zero are the union.
+  Paths paths;
+  for (const auto* r : parts) {
+    for (const auto& c : r->impl_->components) {
+      paths.push_back(c.outer);
+      paths.insert(paths.end(), c.holes.begin(), c.holes.end());
+    }
+  }
   return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
 }
 

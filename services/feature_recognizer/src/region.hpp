@@ -32,8 +32,14 @@ class Region {
   static Region polygon(const Ring& ring);  // a simple polygon, either orientation
   static Region rectangle(const Box2& box);
   static Region union_of(const std::vector<Ring>& polygons);  // simple polygons
+  // The points that closed curves (each may cross itself) wind around a non-zero number of
+  // times, their windings summed; curves must not wind negatively where others wind positively.
+  static Region from_winding(const std::vector<Ring>& curves);
   // Boundaries as polygons() gives them (outer rings and their holes, any orientation).
   static Region from_polygons(const std::vector<PolygonWithHoles>& polygons);
+
+  // The union of many regions in one sweep (chained unions would redo the growing result each time).
+  static Region union_all(const std::vector<Region>& regions);
 
   Region united(const Region& other) const;
   Region intersected(const Region& other) const;

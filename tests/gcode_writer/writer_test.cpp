@@ -1,0 +1,169 @@
+// The writer's own constructs through the public API: the repeat construct read back as the
+// unrolled motion in every dialect, text conventions of each dialect, and located refusals.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "ncbridge/common/error.hpp"
+#include "ncbridge/gcode_writer/program_writer.hpp"
+#include "ncbridge/interpreter/canon_printer.hpp"
+#include "support/listing.hpp"
+#include "support/same_motion.hpp"
+
+using namespace ncbridge;
+using namespace ncbridge::canonical;
+
+namespace {
+
+const gcode_writer::Dialect kDialects[] = {gcode_writer::Dialect::Rs274Ngc, gcode_writer::Dialect::Fanuc,
+                                           gcode_writer::Dialect::Mach3, gcode_writer::Dialect::Siemens840D,
+                                           gcode_writer::Dialect::Heidenhain};
+
+interpreter::Dialect reader_of(gcode_writer::Dialect d) {
+  switch (d) {
+    case gcode_writer::Dialect::Fanuc: return interpreter::Dialect::Fanuc;
+    case gcode_writer::Dialect::Mach3: return interpreter::Dialect::Mach3;
+    case gcode_writer::Dialect::Siemens840D: return interpreter::Dialect::Siemens840D;
+    case gcode_writer::Dialect::Heidenhain: return interpreter::Dialect::Heidenhain;
+    case gcode_writer::Dialect::Rs274Ngc: break;
+  }
+  return interpreter::Dialect::Rs274Ngc;
+}
+
+Call at(Data d, std::uint32_t line = 1) { return Call{std::move(d), Source{0, line, -1, 0}, std::nullopt}; }
+
+Pose xyz(double x, double y, double z) {
+  Pose p;
+  p.x = x;
+  p.y = y;
+  p.z = z;
+  return p;
+}
+
+// The listing of calls, as `ncbridge canon` prints them.
+std::string listing(const std::vector<Call>& calls) {
+  char* buffer = nullptr;
+  std::size_t size = 0;
+  std::FILE* memory = open_memstream(&buffer, &size);
+  {
+    interpreter::CanonPrinter printer(memory);
+    for (const Call& c : calls) printer.call(c);
+    printer.flush();
+  }
+  std::fclose(memory);
+  std::string text(buffer, size);
+  std::free(buffer);
+  return text;
+}
+
+std::vector<Call> start_up() {
+  return {at(UseLengthUnits{Units::Millimeters}), at(SetG5xOffset{1, Pose{}}), at(SetG92Offset{Pose{}}),
+          at(SetXyRotation{0}), at(SetFeedReference{FeedReference::Xyz}), at(OnReset{})};
+}
+
+std::string read_back(const std::string& text, gcode_writer::Dialect d) {
+  interpreter::Options o;
+  o.dialect = reader_of(d);
+  return ncbridge::testing::canon_listing_of_text(text, "written" + std::string(gcode_writer::program_extension(d)), o);
+}
+
+// One layer of a pocket: plunge by the step, a square with a rounded corner, back to the start.
+std::vector<Call> layer(double z) {
+  return {at(StraightFeed{xyz(10, 10, z)}),       at(StraightFeed{xyz(30, 10, z)}),
+          at(StraightFeed{xyz(30, 25, z)}),       at(ArcFeed{25, 30, 25, 25, 1, z, 0, 0, 0, 0, 0, 0}),
+          at(StraightFeed{xyz(10, 30, z)}),       at(StraightFeed{xyz(10, 10, z)})};
+}
+
+TEST(RepeatConstruct, ReadsBackAsEveryCopyInEveryDialect) {
+  for (gcode_writer::Dialect d : kDialects) {
+    SCOPED_TRACE(std::string(gcode_writer::dialect_name(d)));
+    gcode_writer::Options options;
+    options.dialect = d;
+    std::string text;
+    std::vector<Call> expected = start_up();
+    {
+      gcode_writer::ProgramWriter writer(options, [&](std::string_view piece) { text.append(piece); });
+      for (const Call& c : start_up()) writer.call(c);
+      const std::vector<Call> head = {at(SetSpindleSpeed{0, 3000}), at(StartSpindleClockwise{0}),
+                                      at(StraightTraverse{xyz(10, 10, 5)}), at(StraightTraverse{xyz(10, 10, 0)}),
+                                      at(SetFeedRate{400})};
+      for (const Call& c : head) {
+        writer.call(c);
+        expected.push_back(c);
+      }
+      writer.begin_repeat(4, -1.5);
+      for (const Call& c : layer(-1.5)) writer.call(c);
+      writer.end_repeat();
+      for (int copy = 0; copy < 4; ++copy) {
+        for (const Call& c : layer(-1.5 * (copy + 1))) expected.push_back(c);
+      }
+      const std::vector<Call> tail = {at(StraightTraverse{xyz(10, 10, 5)}), at(ProgramEnd{})};
+      for (const Call& c : tail) {
+        writer.call(c);
+        expected.push_back(c);
+      }
+      writer.end();
+    }
+    const auto comparison = ncbridge::testing::compare_motion(listing(expected), read_back(text, d));
+    EXPECT_TRUE(comparison.equal) << comparison.report << "\n" << text;
+    EXPECT_GT(comparison.actions, 25u);
+  }
+}
+
+TEST(RepeatConstruct, ABodyThatDoesNotJoinUpIsRefused) {
+  for (gcode_writer::Dialect d : kDialects) {
+    gcode_writer::Options options;
+    options.dialect = d;
+    gcode_writer::ProgramWriter writer(options, [](std::string_view) {});
+    writer.call(at(SetFeedRate{100}));
+    writer.call(at(StraightTraverse{xyz(0, 0, 1)}));
+    writer.begin_repeat(3, -1);
+    writer.call(at(StraightFeed{xyz(5, 0, 0)}, 7));
+    EXPECT_THROW(writer.end_repeat(), InputError);
+  }
+}
+
+TEST(RepeatConstruct, OnlyMovesRepeat) {
+  gcode_writer::Options options;
+  gcode_writer::ProgramWriter writer(options, [](std::string_view) {});
+  writer.begin_repeat(2, -1);
+  try {
+    writer.call(at(StartSpindleClockwise{0}, 12));
+    FAIL() << "a spindle start inside a repeated body was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 12u);
+    EXPECT_NE(std::string(e.what()).find("repeated body"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Dialects, FanucNumbersCarryADecimalPoint) {
+  gcode_writer::Options options;
+  options.dialect = gcode_writer::Dialect::Fanuc;
+  std::vector<Call> calls = start_up();
+  calls.push_back(at(StraightTraverse{xyz(10, 2.5, 30)}));
+  calls.push_back(at(ProgramEnd{}));
+  const std::string text = gcode_writer::write_program(calls, options);
+  EXPECT_NE(text.find("X10. Y2.5 Z30."), std::string::npos) << text;
+  EXPECT_NE(text.find("O1000"), std::string::npos) << text;
+  EXPECT_EQ(text.rfind("%\n"), text.size() - 2) << text;
+}
+
+TEST(Refusals, NameTheConstructTheDialectAndTheSourceLine) {
+  gcode_writer::Options options;
+  options.dialect = gcode_writer::Dialect::Fanuc;
+  gcode_writer::ProgramWriter writer(options, [](std::string_view) {});
+  writer.source_file(0, "part.ngc");
+  writer.call(at(SetSpindleMode{0, 2500}, 3));
+  writer.call(at(SetFeedRate{100}, 3));
+  try {
+    writer.call(at(StraightFeed{xyz(1, 0, 0)}, 4));
+    FAIL() << "fanuc wrote constant surface speed";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, "part.ngc");
+    EXPECT_EQ(e.where().line, 4u);
+    EXPECT_NE(std::string(e.what()).find("fanuc cannot express constant surface speed"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
