@@ -278,6 +278,13 @@ class Interpreter {
   }
 
   // ---- elements
+  // WORKPIECE_PROBING (G38.2/G38.3 in the CC1 model since 2facbe5) is not written yet: refused by
+  // name until the writer learns it (main did not build without an overload here).
+  void element(const sn::WorkpieceProbing& p, std::size_t) {
+    name("workpiece probing", p.its_id);
+    fail("WORKPIECE_PROBING (touch probing) is not written as a program yet");
+  }
+
   void element(const sn::RapidMovement& r, std::size_t index) {
     name("rapid movement", r.its_id);
     // Two rapid movements in a row were split by a tool change (docs/cc1.md): the first moves
