@@ -310,6 +310,8 @@ bool Runner::run_block(SBlock& b) {
           incremental_ = n == "G91";
         } else if (std::find(table_.ignored_calls.begin(), table_.ignored_calls.end(), n) != table_.ignored_calls.end()) {
         } else if (n == "DEF") {
+        } else if (n == "BSPLINE" || n == "ASPLINE" || n == "CSPLINE") {
+          m_.fail(it.column, "not supported: spline interpolation " + n + " (a subprogram of that name is not called)");
         } else if (subprogram.empty() && n.size() > 0) {
           subprogram = n;  // a named subprogram call: PART1
           sub_column = it.column;
