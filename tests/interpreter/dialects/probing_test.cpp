@@ -1,8 +1,8 @@
-// Probing (and a spline construct) in the controller dialects, through the library API: Fanuc G31 skip, Mach3 G31 probe,
+// Probing in the controller dialects, through the library API: Fanuc G31 skip, Mach3 G31 probe,
 // SINUMERIK MEAS=/MEAW= measuring, Heidenhain TCH PROBE 0 (reference plane). Each is a probe
 // move (STRAIGHT_PROBE, LinuxCNC's G38.3 or G38.5); what a construct cannot be read as is a
-// located "not supported: probing cycle ..." error. (The moves around them are checked against
-// rs274 by the single-construct programs in <dialect>/.)
+// located "not supported: ..." error (so are SINUMERIK's spline interpolations). The moves around
+// them are checked against rs274 by the single-construct programs in <dialect>/.
 #include <gtest/gtest.h>
 
 #include <string>
