@@ -34,6 +34,7 @@ struct Layer {
   std::vector<std::vector<Point3>> paths;  // one per pass piece
   double feed = 0, spindle_rpm = 0;
   bool freeform = false;                   // x, y and z vary together (3D surface machining)
+  bool coarse = false;                     // beyond the work limit: no swept area (its extent stands for it)
   Region area;                             // the tool's swept region (filled in by the caller)
   Box2 extent;                             // bounding box of the swept region
   std::vector<std::vector<Point2>> xy_paths() const;

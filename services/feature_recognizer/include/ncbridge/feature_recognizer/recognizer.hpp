@@ -18,6 +18,13 @@ struct Options {
   // A later layer or operation whose depth goes at most this far below a feature's floor is
   // still that feature (finishing allowance), not a new, deeper feature.
   double finishing_allowance = 1.0;
+  // The bound on exact geometric work (docs/recognition.md, "Bounded cost"): each stage that
+  // makes or compares cutting areas may spend work_base + work_per_point × (toolpath points)
+  // units (one unit: a vertex handed to or made by a Boolean operation, about 0.2 µs); what a
+  // stage meets beyond that is treated coarsely and the features made of it are marked
+  // approximate. Real programs spend under 10 per point; 0 work_per_point: no bound.
+  double work_per_point = 40;
+  double work_base = 5e6;
 };
 
 // Recognises the features cut by `workingsteps` from `stock`. Throws ncbridge::InputError for
