@@ -51,7 +51,8 @@ nlohmann::ordered_json dimensions(const fr::RecognizedFeature& f) {
 
 }  // namespace
 
-Cc2Output build_cc2(const stepnc::Project& cc1, const std::optional<setup::Stock>& stock, const std::string& source) {
+Cc2Output build_cc2(const stepnc::Project& cc1, const std::optional<setup::Stock>& stock, const std::string& source,
+                    const std::function<void()>& checkpoint) {
   Cc2Output out;
   // The CC1 project's rawpiece first: a program converted directly and its CC1 file then give
   // the same stock, hence the same CC2 bytes.
@@ -59,7 +60,9 @@ Cc2Output build_cc2(const stepnc::Project& cc1, const std::optional<setup::Stock
   if (rawpiece) out.stock = *rawpiece;
   else if (stock) out.stock = *stock;
   else throw InputError({source, 0, 0}, "no stock: the file has no rawpiece block; give --stock");
-  out.features = fr::recognize(fr::workingsteps_from_cc1(cc1), out.stock);
+  fr::Options options;
+  options.checkpoint = checkpoint;
+  out.features = fr::recognize(fr::workingsteps_from_cc1(cc1), out.stock, options);
   auto cc2 = fr::cc2_from_cc1(cc1, out.features);
   out.project = std::move(cc2.project);
   out.feature_ids = std::move(cc2.feature_ids);

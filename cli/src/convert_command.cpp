@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -50,6 +51,29 @@ struct ConvertArguments {
   std::string html;
   std::string subroutine_path;
   std::optional<double> security_plane;
+  double max_seconds = 0;  // 0: no limit
+};
+
+// Throws once the conversion has run longer than --max-seconds (an InputError: the program is
+// too costly to convert within the bound).
+class TimeLimit {
+ public:
+  TimeLimit(const ConvertArguments& args, Clock::time_point start) : program_(args.program), seconds_(args.max_seconds) {
+    if (seconds_ > 0) deadline_ = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds_));
+  }
+  void check() const {
+    if (!deadline_ || Clock::now() <= *deadline_) return;
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", seconds_);
+    throw InputError({program_, 0, 0}, std::string("the conversion ran longer than --max-seconds (") + text +
+                                           " s) and was stopped; nothing was written");
+  }
+  bool set() const { return deadline_.has_value(); }
+
+ private:
+  std::string program_;
+  double seconds_;
+  std::optional<Clock::time_point> deadline_;
 };
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
@@ -67,8 +91,8 @@ interpreter::Dialect dialect_of(const std::string& name) {
 // clock readings a call cost a few percent) and showing progress on a terminal.
 class TimedSink final : public canonical::Sink {
  public:
-  TimedSink(cc1_builder::Cc1Builder& builder, bool progress, bool timed)
-      : builder_(builder), progress_(progress), timed_(timed) {}
+  TimedSink(cc1_builder::Cc1Builder& builder, bool progress, bool timed, const TimeLimit& limit)
+      : builder_(builder), progress_(progress), timed_(timed), limit_(limit) {}
   void source_file(std::uint32_t index, std::string_view path) override { builder_.source_file(index, path); }
   void call(const canonical::Call& c) override {
     if (timed_) {
@@ -78,7 +102,8 @@ class TimedSink final : public canonical::Sink {
     } else {
       builder_.call(c);
     }
-    if (progress_ && (++calls_ & 0xFFFF) == 0) {
+    if ((++calls_ & 0xFFF) == 0) limit_.check();
+    if (progress_ && (calls_ & 0xFFFF) == 0) {
       std::fprintf(stderr, "\rconverting: line %u, %llu canonical calls", c.source.line,
                    static_cast<unsigned long long>(calls_));
       std::fflush(stderr);
@@ -100,6 +125,7 @@ class TimedSink final : public canonical::Sink {
  private:
   cc1_builder::Cc1Builder& builder_;
   bool progress_, timed_;
+  const TimeLimit& limit_;
   bool shown_ = false;
   std::uint64_t calls_ = 0;
   Clock::duration spent_{};
@@ -240,6 +266,7 @@ void print_warnings(const std::vector<cc1_builder::Warning>& warnings) {
 // CC1 from a program, streamed: interpreter -> cc1_builder -> (Part 21 writer, report) element
 // by element; the model is never whole in memory.
 int run_streamed_cc1(const ConvertArguments& args, Clock::time_point t0) {
+  const TimeLimit limit(args, t0);
   const std::optional<setup::Stock> stock = setup::read_stock(args.stock);
   const cc1_builder::Options options = builder_options(args, stock);
   const interpreter::Options interp = interpreter_options(args, options.tools);
@@ -252,7 +279,7 @@ int run_streamed_cc1(const ConvertArguments& args, Clock::time_point t0) {
   if (!args.report.empty()) report.emplace(args.report, Cc1Report::Head{args.program, args.output, args.level});
   ElementWriter elements(writer, report ? &*report : nullptr);
   cc1_builder::Cc1Builder builder(options, &elements);
-  TimedSink sink(builder, isatty(STDERR_FILENO) != 0, report.has_value());
+  TimedSink sink(builder, isatty(STDERR_FILENO) != 0, report.has_value(), limit);
   const auto t_interpret = Clock::now();
   interpret(args, interp, sink);
   const auto t_built = Clock::now();
@@ -284,6 +311,7 @@ int run_streamed_cc1(const ConvertArguments& args, Clock::time_point t0) {
 
 int run_convert(const ConvertArguments& args) {
   const auto t0 = Clock::now();
+  const TimeLimit limit(args, t0);
   if (!args.html.empty() && args.level != "cc2") {
     throw InputError({args.program, 0, 0}, "--html needs --level cc2 (it draws the recognised features)");
   }
@@ -309,7 +337,7 @@ int run_convert(const ConvertArguments& args) {
     const cc1_builder::Options options = builder_options(args, stock);
     const interpreter::Options interp = interpreter_options(args, options.tools);
     cc1_builder::Cc1Builder builder(options);
-    TimedSink sink(builder, isatty(STDERR_FILENO) != 0, !args.report.empty());
+    TimedSink sink(builder, isatty(STDERR_FILENO) != 0, !args.report.empty(), limit);
     t_interpret = Clock::now();
     interpret(args, interp, sink);
     t_built = Clock::now();
@@ -320,7 +348,11 @@ int run_convert(const ConvertArguments& args) {
   }
   // CC2: the features recognised in the CC1 model, with their workingsteps (cc2_output.hpp).
   std::optional<Cc2Output> cc2;
-  if (args.level == "cc2") cc2 = build_cc2(project, stock, args.program);
+  if (args.level == "cc2") {
+    std::function<void()> checkpoint;
+    if (limit.set()) checkpoint = [&limit] { limit.check(); };
+    cc2 = build_cc2(project, stock, args.program, checkpoint);
+  }
   const auto t_recognized = Clock::now();
 
   step_writer::StepncWriteOptions write;
@@ -384,6 +416,9 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--html", args->html, "Also write an HTML page: top view, toolpaths, features (--level cc2)");
   cmd->add_option("--security-plane", args->security_plane, "Security plane Z in mm (default: the highest rapid)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
+  cmd->add_option("--max-seconds", args->max_seconds,
+                  "Stop with an error (writing nothing) once the conversion has run this long (default: no limit)")
+      ->check(CLI::NonNegativeNumber);
   cmd->callback([args, &exit_code]() { exit_code = run_convert(*args); });
 }
 

@@ -12,7 +12,8 @@ std::vector<std::size_t> MillingGroup::layers() const {
   return out;
 }
 
-std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance, WorkBudget& budget) {
+std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance, WorkBudget& budget,
+                                       const std::function<void()>& checkpoint) {
   std::vector<MillingGroup> groups;
   std::optional<std::size_t> last_group;  // the group the previous layer went to
   std::vector<Region> fills;
@@ -42,6 +43,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
   };
 
   for (std::size_t i = 0; i < layers.size(); ++i) {
+    if (checkpoint) checkpoint();
     const auto& layer = layers[i];
     if (layer.coarse) {
       if (groups.empty() || !groups.back().coarse || layers[groups.back().operations.back().layers.back()].tool.number != layer.tool.number) {

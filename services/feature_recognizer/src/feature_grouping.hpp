@@ -40,6 +40,7 @@ inline constexpr std::size_t kNearFeatureLimit = 16;
 
 // Exact comparisons charge `budget`; past it a layer starts its own group. Coarse layers make
 // one group per run of one tool, one operation per layer.
-std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance, WorkBudget& budget);
+std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance, WorkBudget& budget,
+                                       const std::function<void()>& checkpoint = {});
 
 }  // namespace ncbridge::feature_recognizer

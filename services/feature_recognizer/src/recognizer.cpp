@@ -57,9 +57,11 @@ bool same_key(const Layer& a, Point2 a_origin, const Layer& b, Point2 b_origin) 
 
 // Past the budget (the path points and area vertices of the layers made so far) the layers
 // are coarse: no swept area.
-void compute_layer_areas(std::vector<Layer>& layers, double tolerance, WorkBudget& budget) {
+void compute_layer_areas(std::vector<Layer>& layers, double tolerance, WorkBudget& budget,
+                         const std::function<void()>& checkpoint) {
   std::unordered_multimap<std::uint64_t, std::size_t> cache;  // key hash -> the layer whose area it is
   for (std::size_t i = 0; i < layers.size(); ++i) {
+    if (checkpoint) checkpoint();
     auto& layer = layers[i];
     if (!budget.available() || layer.coarse) {
       layer.coarse = true;
@@ -161,7 +163,8 @@ struct Pending {
 
 std::vector<RecognizedFeature> recognize(const std::vector<ToolpathWorkingstep>& workingsteps,
                                          const setup::Stock& stock, const Options& options) {
-  auto analysis = analyse_cutter_locations(workingsteps, options.chord_tolerance);
+  const auto& checkpoint = options.checkpoint;
+  auto analysis = analyse_cutter_locations(workingsteps, options.chord_tolerance, checkpoint);
   // One budget per stage (docs/recognition.md, "Bounded cost"), in proportion to the program.
   double points = static_cast<double>(analysis.drill_passes.size());
   for (const auto& layer : analysis.layers) {
@@ -170,19 +173,21 @@ std::vector<RecognizedFeature> recognize(const std::vector<ToolpathWorkingstep>&
   const double limit = options.work_per_point > 0 ? options.work_base + options.work_per_point * points
                                                   : std::numeric_limits<double>::infinity();
   WorkBudget areas_budget(limit), grouping_budget(limit), classification_budget(limit), material_budget(limit);
-  compute_layer_areas(analysis.layers, options.chord_tolerance, areas_budget);
-  auto groups = group_layers(analysis.layers, options.finishing_allowance, grouping_budget);
+  compute_layer_areas(analysis.layers, options.chord_tolerance, areas_budget, checkpoint);
+  auto groups = group_layers(analysis.layers, options.finishing_allowance, grouping_budget, checkpoint);
   split_nested_step_downs(groups, analysis.layers);
   const auto part = find_part_envelope(groups, stock, options.chord_tolerance);
 
   std::vector<Pending> pending;
   for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (checkpoint) checkpoint();
     if (auto c = classify_group(g, groups, analysis.layers, part, classification_budget)) {
       Pending p{c->order, std::move(*c), groups[g].area};
       pending.push_back(std::move(p));
     }
   }
   for (const auto& hole : recognize_holes(analysis.drill_passes)) {
+    if (checkpoint) checkpoint();
     if (!part.outline.contains(hole.at)) continue;  // drilling in the air beside the part
     ClassifiedFeature c;
     auto& f = c.feature;
@@ -212,6 +217,7 @@ std::vector<RecognizedFeature> recognize(const std::vector<ToolpathWorkingstep>&
   MaterialModel material(stock.max[2]);
   std::vector<RecognizedFeature> out;
   for (auto& p : pending) {
+    if (checkpoint) checkpoint();
     auto& f = p.item.feature;
     if (!material_budget.available()) {
       f.top_z = stock.max[2];  // not compared with the earlier cuts (beyond the work limit)

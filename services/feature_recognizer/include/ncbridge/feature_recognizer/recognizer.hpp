@@ -3,6 +3,7 @@
 // phase 1 by tool type and cutter-location analysis, phase 2 by the cutting area and the milling
 // strategy compared with the stock and the material left by earlier workingsteps.
 // docs/recognition.md describes the rules and tolerances.
+#include <functional>
 #include <vector>
 
 #include "ncbridge/feature_recognizer/feature.hpp"
@@ -25,6 +26,9 @@ struct Options {
   // approximate. Real programs spend under 10 per point; 0 work_per_point: no bound.
   double work_per_point = 40;
   double work_base = 5e6;
+  // Called between cutting passes, layers, features and holes; it may throw to stop recognition
+  // (a service's job time limit, `convert --max-seconds`). Empty: never called.
+  std::function<void()> checkpoint;
 };
 
 // Recognises the features cut by `workingsteps` from `stock`. Throws ncbridge::InputError for
