@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "output_files.hpp"
+#include "warning.hpp"
 #include "ncbridge/stepnc/project.hpp"
 
 namespace ncbridge::cli {
@@ -24,7 +25,7 @@ class Cc1Report {
   struct Tail {
     std::uint64_t canonical_calls = 0;
     std::uint64_t output_bytes = 0;
-    std::vector<std::pair<std::string, std::string>> warnings;  // where, message
+    std::vector<Warning> warnings;
     std::vector<std::pair<std::string, double>> timings_ms;
   };
 

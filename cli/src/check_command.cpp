@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "errors.hpp"
+#include "feedback.hpp"
 #include "input_files.hpp"
 #include "ncbridge/step_writer/part21_reader.hpp"
 #include "ncbridge/step_writer/schema_check.hpp"
@@ -51,7 +52,7 @@ std::string finding_line(const step_writer::Diagnostic& d) {
   return d.severity == step_writer::Severity::Error ? error_line(at, message) : warning_line(at, message);
 }
 
-int run_check(const CheckArguments& args) {
+int run_check(const CheckArguments& args, const Feedback& feedback) {
   if (!args.schema.empty()) require_input_file(args.schema, "--schema");
   std::filesystem::path schema_path = args.schema;
   if (schema_path.empty()) {
@@ -62,6 +63,7 @@ int run_check(const CheckArguments& args) {
     }
     schema_path = *found;
   }
+  feedback.detail("schema: " + schema_path.string());
   const Input file = open_input(args.file, "file");
   step_writer::part21::ReadResult read = file.text ? step_writer::part21::read_part21(*file.text, file.name)
                                                    : step_writer::part21::read_part21_file(file.path);
@@ -86,8 +88,8 @@ int run_check(const CheckArguments& args) {
   for (const auto& d : diagnostics) std::printf("%s\n", finding_line(d).c_str());
   std::fflush(stdout);
   std::size_t errors = step_writer::count_errors(diagnostics);
-  std::fprintf(stderr, "%s: %zu instances, %zu errors, %zu warnings\n", file.name.c_str(), read.graph.size(), errors,
-               diagnostics.size() - errors);
+  feedback.summary(file.name + ": " + std::to_string(read.graph.size()) + " instances, " + std::to_string(errors) +
+                   " errors, " + std::to_string(diagnostics.size() - errors) + " warnings");
   return errors == 0 ? exit_status::ok : exit_status::input_error;
 }
 
@@ -100,7 +102,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
   check->add_option("--schema", args->schema,
                     "EXPRESS schema (default: $NCBRIDGE_ISO14649_SCHEMA, then the installed or development copy)");
   check->add_flag("--strict", args->strict, "Report draft/published entity name variants as errors");
-  check->callback([args, &exit_code] { exit_code = run_check(*args); });
+  check->callback([args, check, &exit_code] { exit_code = run_check(*args, Feedback(verbosity_of(*check))); });
 }
 
 }  // namespace ncbridge::cli

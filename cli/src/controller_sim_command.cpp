@@ -8,9 +8,8 @@
 // branches are taken and subroutines called by our interpreter, and what is published is the
 // sequence of blocks executed, without the o-word lines that steered it, so a block in a loop
 // is published once per pass and a subroutine's blocks once per call. A call's arguments are
-// published as the parameter setting "#1=[...] #2=[...]" that the call performs. How: every
-// block of a copy of the program is preceded by a comment line naming its line, and the
-// interpreter's COMMENT calls give the order the lines ran in. Not expanded: subroutines in
+// published as the parameter setting "#1=[...] #2=[...]" that the call performs (the order is
+// capture::execution_order, services/capture/, which live capture also uses). Not expanded: subroutines in
 // other files (o<name> call of a file on the subroutine path: their blocks are not published)
 // and the restoring of the caller's #1-#30 after a call returns. Other dialects are published
 // line by line as written (their control flow is not run here).
@@ -34,8 +33,9 @@
 #include "output_files.hpp"
 #include "ncbridge/bus/participant.hpp"
 #include "ncbridge/bus/writer.hpp"
-#include "ncbridge/canonical/call.hpp"
+#include "ncbridge/capture/execution_order.hpp"
 #include "ncbridge/common/error.hpp"
+#include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/service/job_watch.hpp"
 #include "ncbridge/setup/tool_list.hpp"
@@ -56,123 +56,6 @@ struct ControllerSimArguments {
   double timeout_s = 600;
 };
 
-// One block as the controller executes it.
-struct ExecutedLine {
-  std::uint32_t line = 0;  // 1-based line in the program
-  std::string text;
-};
-
-constexpr std::string_view kMarker = "ncbridge-sim-line ";
-
-std::vector<std::string> split_lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(std::move(line));
-  }
-  return lines;
-}
-
-bool blank(std::string_view line) { return line.find_first_not_of(" \t") == std::string_view::npos; }
-
-// The o-word of a line ("sub", "call", "while", ...), lower case, or "" when it has none.
-std::string o_word_keyword(std::string_view line) {
-  std::size_t i = line.find_first_not_of(" \t/");
-  if (i != std::string_view::npos && (line[i] == 'n' || line[i] == 'N')) {  // an N word first
-    ++i;
-    while (i < line.size() && (std::isdigit(static_cast<unsigned char>(line[i])) || line[i] == '.')) ++i;
-    i = line.find_first_not_of(" \t", i);
-  }
-  if (i == std::string_view::npos || (line[i] != 'o' && line[i] != 'O')) return "";
-  ++i;
-  if (i < line.size() && line[i] == '<') {
-    i = line.find('>', i);
-    if (i == std::string_view::npos) return "";
-    ++i;
-  } else {
-    const std::size_t digits = i;
-    while (i < line.size() && std::isdigit(static_cast<unsigned char>(line[i]))) ++i;
-    if (i == digits) return "";
-  }
-  i = line.find_first_not_of(" \t", i);
-  std::string keyword;
-  while (i < line.size() && std::isalpha(static_cast<unsigned char>(line[i])))
-    keyword.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(line[i++]))));
-  return keyword;
-}
-
-// "o100 call [1] [2+#3]" -> "#1=[1] #2=[2+#3]"; "" when the call has no arguments.
-std::string call_arguments_as_parameters(std::string_view line) {
-  std::string out;
-  std::size_t at = line.find_first_of("lL", line.find_first_of("cC", line.find_first_of("oO")));
-  int n = 0, depth = 0;
-  std::string arg;
-  for (std::size_t i = at; at != std::string_view::npos && i < line.size(); ++i) {
-    const char c = line[i];
-    if (c == '(' || c == ';') break;  // a comment
-    if (c == '[') {
-      if (depth++ > 0) arg.push_back(c);
-    } else if (c == ']') {
-      if (--depth > 0) arg.push_back(c);
-      else out += (out.empty() ? "" : " ") + ("#" + std::to_string(++n) + "=[" + arg + "]"), arg.clear();
-    } else if (depth > 0) {
-      arg.push_back(c);
-    }
-  }
-  return out;
-}
-
-// Collects the order in which the marked lines ran.
-class LineTrace final : public canonical::Sink {
- public:
-  void source_file(std::uint32_t, std::string_view) override {}
-  void call(const canonical::Call& c) override {
-    const auto* comment = std::get_if<canonical::Comment>(&c.data);
-    if (comment && comment->text.starts_with(kMarker)) lines.push_back(static_cast<std::uint32_t>(std::stoul(comment->text.substr(kMarker.size()))));
-  }
-  void end() override {}
-  std::vector<std::uint32_t> lines;
-};
-
-// The blocks the controller executes, in order: the program run with its control flow.
-std::vector<ExecutedLine> execute(const std::string& program, const std::string& text, const setup::ToolList& tools) {
-  const std::vector<std::string> lines = split_lines(text);
-  std::string marked;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const std::string keyword = o_word_keyword(lines[i]);
-    const bool percent = lines[i].find_first_not_of(" \t") != std::string::npos && lines[i][lines[i].find_first_not_of(" \t")] == '%';
-    if (!blank(lines[i]) && !percent && (keyword.empty() || keyword == "call"))
-      marked += "(" + std::string(kMarker) + std::to_string(i + 1) + ")\n";
-    marked += lines[i] + "\n";
-  }
-  interpreter::Options options;
-  options.tools = tools;
-  LineTrace trace;
-  interpreter::interpret_text(marked, program, options, trace);
-  std::vector<ExecutedLine> out;
-  for (const std::uint32_t n : trace.lines) {
-    const std::string& line = lines.at(n - 1);
-    if (o_word_keyword(line) == "call") {
-      const std::string parameters = call_arguments_as_parameters(line);
-      if (!parameters.empty()) out.push_back({n, parameters});
-      continue;
-    }
-    out.push_back({n, line});
-  }
-  return out;
-}
-
-// Other dialects: the program's lines as written.
-std::vector<ExecutedLine> as_written(const std::string& text) {
-  std::vector<ExecutedLine> out;
-  const std::vector<std::string> lines = split_lines(text);
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (!blank(lines[i])) out.push_back({static_cast<std::uint32_t>(i + 1), lines[i]});
-  }
-  return out;
-}
-
 int run_controller_sim(const ControllerSimArguments& args) {
   if (!args.tools.empty()) require_input_file(args.tools, "--tools");
   OutputSet outputs;
@@ -191,8 +74,9 @@ int run_controller_sim(const ControllerSimArguments& args) {
     text = read.str();
   }
   const setup::ToolList tools = args.tools.empty() ? setup::ToolList{} : setup::read_tool_list(args.tools);
-  const std::vector<ExecutedLine> blocks =
-      args.dialect == "rs274ngc" ? execute(program.name, text, tools) : as_written(text);
+  interpreter::Dialect dialect = interpreter::Dialect::Rs274Ngc;
+  interpreter::parse_dialect_name(args.dialect, dialect);
+  const std::vector<capture::ExecutedLine> blocks = capture::execution_order(program.name, text, tools, dialect);
 
   std::string run_id = args.run_id;
   if (run_id.empty()) {
@@ -221,7 +105,7 @@ int run_controller_sim(const ControllerSimArguments& args) {
     ++seq;
   };
   publish(wire::BlockKind::RunStart, program.name, 0);
-  for (const ExecutedLine& block : blocks) {
+  for (const capture::ExecutedLine& block : blocks) {
     if (period.count() > 0) {
       next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
       std::this_thread::sleep_until(next);

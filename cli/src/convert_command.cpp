@@ -6,11 +6,12 @@
 // streamed: each workplan element is written (file and report) as soon as the builder finishes
 // it, so memory stays flat; CC2 needs the whole CC1 model first.
 #include <CLI/CLI.hpp>
-#include <unistd.h>
 
 #include <cctype>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -22,11 +23,15 @@
 #include "cc2_output.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
+#include "feedback.hpp"
 #include "html_report.hpp"
 #include "input_files.hpp"
 #include "output_files.hpp"
+#include "setup_checks.hpp"
+#include "warning.hpp"
 #include "ncbridge/cc1_builder/cc1_builder.hpp"
 #include "ncbridge/common/error.hpp"
+#include "ncbridge/common/version.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/setup/stock.hpp"
@@ -54,6 +59,30 @@ struct ConvertArguments {
   std::string subroutine_path;
   std::optional<double> security_plane;
   bool strict = false;
+  std::vector<int> machine_functions;
+  double max_seconds = 0;  // 0: no limit
+};
+
+// Throws once the conversion has run longer than --max-seconds (an InputError: the program is
+// too costly to convert within the bound).
+class TimeLimit {
+ public:
+  TimeLimit(const ConvertArguments& args, Clock::time_point start) : program_(args.program), seconds_(args.max_seconds) {
+    if (seconds_ > 0) deadline_ = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds_));
+  }
+  void check() const {
+    if (!deadline_ || Clock::now() <= *deadline_) return;
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", seconds_);
+    throw InputError({program_, 1, 1}, std::string("the conversion ran longer than --max-seconds (") + text +
+                                           " s) and was stopped; nothing was written");
+  }
+  bool set() const { return deadline_.has_value(); }
+
+ private:
+  std::string program_;
+  double seconds_;
+  std::optional<Clock::time_point> deadline_;
 };
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
@@ -68,13 +97,18 @@ interpreter::Dialect dialect_of(const std::string& name) {
 }
 
 // Forwards the stream to the builder, timing the builder's share when a report wants it (two
-// clock readings a call cost a few percent) and showing progress on a terminal.
+// clock readings a call cost a few percent), telling the setup checks what only the stream
+// says, and feeding the progress line.
 class TimedSink final : public canonical::Sink {
  public:
-  TimedSink(cc1_builder::Cc1Builder& builder, bool progress, bool timed)
-      : builder_(builder), progress_(progress), timed_(timed) {}
-  void source_file(std::uint32_t index, std::string_view path) override { builder_.source_file(index, path); }
+  TimedSink(cc1_builder::Cc1Builder& builder, ProgramFacts& facts, Progress& progress, bool timed, const TimeLimit& limit)
+      : builder_(builder), facts_(facts), progress_(progress), timed_(timed), limit_(limit) {}
+  void source_file(std::uint32_t index, std::string_view path) override {
+    facts_.source_file(index, path);
+    builder_.source_file(index, path);
+  }
   void call(const canonical::Call& c) override {
+    facts_.call(c);
     if (timed_) {
       const auto start = Clock::now();
       builder_.call(c);
@@ -82,39 +116,38 @@ class TimedSink final : public canonical::Sink {
     } else {
       builder_.call(c);
     }
-    if (progress_ && (++calls_ & 0xFFFF) == 0) {
-      std::fprintf(stderr, "\rconverting: line %u, %llu canonical calls", c.source.line,
-                   static_cast<unsigned long long>(calls_));
-      std::fflush(stderr);
-      shown_ = true;
-    }
+    if ((++calls_ & 0xFFF) == 0) limit_.check();
+    progress_.tick([&] {
+      return "converting: line " + std::to_string(c.source.line) + ", " + std::to_string(builder_.calls_seen()) +
+             " canonical calls";
+    });
   }
   void end() override {
     const auto start = Clock::now();
     builder_.end();
     spent_ += Clock::now() - start;
-    clear();
-  }
-  void clear() {
-    if (shown_) std::fprintf(stderr, "\r\033[K");
-    shown_ = false;
   }
   Clock::duration spent() const { return spent_; }
 
  private:
   cc1_builder::Cc1Builder& builder_;
-  bool progress_, timed_;
-  bool shown_ = false;
+  ProgramFacts& facts_;
+  Progress& progress_;
+  bool timed_;
+  const TimeLimit& limit_;
   std::uint64_t calls_ = 0;
   Clock::duration spent_{};
 };
 
-// Streamed CC1: each finished workplan element goes to the Part 21 writer and, timed, the report
-// (the builder's clock runs around it too).
+// Streamed CC1: each finished workplan element goes to the setup checks, the Part 21 writer
+// and, timed, the report (the builder's clock runs around it too).
 class ElementWriter final : public cc1_builder::WorkplanSink {
  public:
-  ElementWriter(step_writer::StepncStreamWriter& writer, Cc1Report* report) : writer_(writer), report_(report) {}
+  ElementWriter(step_writer::StepncStreamWriter& writer, Cc1Report* report, SetupChecks& checks)
+      : writer_(writer), report_(report), checks_(checks) {}
   void element(const stepnc::Project& project, const stepnc::Executable& element) override {
+    checks_.element(project, element);
+    workingsteps_ += std::holds_alternative<stepnc::MachiningWorkingstep>(element);
     if (!report_) {
       writer_.element(project, element);
       return;
@@ -125,19 +158,24 @@ class ElementWriter final : public cc1_builder::WorkplanSink {
     spent_ += Clock::now() - start;
   }
   Clock::duration spent() const { return spent_; }
+  std::size_t workingsteps() const { return workingsteps_; }
 
  private:
   step_writer::StepncStreamWriter& writer_;
   Cc1Report* report_;
+  SetupChecks& checks_;
+  std::size_t workingsteps_ = 0;
   Clock::duration spent_{};
 };
 
 std::string_view kind_of(const stepnc::Executable& e) {
-  return std::holds_alternative<stepnc::RapidMovement>(e) ? "RAPID_MOVEMENT" : "MACHINING_WORKINGSTEP";
+  if (std::holds_alternative<stepnc::RapidMovement>(e)) return "RAPID_MOVEMENT";
+  if (std::holds_alternative<stepnc::WorkpieceProbing>(e)) return "WORKPIECE_PROBING";
+  return "MACHINING_WORKINGSTEP";
 }
 
 nlohmann::ordered_json report_of(const ConvertArguments& args, const std::string& program, const stepnc::Project& p,
-                         const std::vector<cc1_builder::Warning>& warnings, std::uint64_t calls,
+                         const std::vector<Warning>& warnings, std::uint64_t calls,
                          std::size_t bytes, const nlohmann::ordered_json& timings) {
   using json = nlohmann::ordered_json;
   json workingsteps = json::array();
@@ -167,8 +205,11 @@ nlohmann::ordered_json report_of(const ConvertArguments& args, const std::string
   json features = json::array();
   for (const auto& f : p.features) features.push_back({{"id", stepnc::feature_id(f)}, {"type", stepnc::entity_name(f)}});
   json warning_list = json::array();
-  for (const auto& w : warnings) warning_list.push_back({{"where", w.where.to_string()}, {"message", w.message}});
-  return json{{"program", program},
+  for (const auto& w : warnings) {
+    warning_list.push_back({{"kind", w.kind}, {"where", w.where.to_string()}, {"message", w.message}});
+  }
+  return json{{"ncbridge_version", std::string(version())},
+              {"program", program},
               {"output", args.output},
               {"level", args.level},
               {"canonical_calls", calls},
@@ -201,6 +242,8 @@ bool is_part21_file(const Input& input) {
 
 // What is open before any work starts: the program, and every output checked.
 struct ConvertRun {
+  Feedback feedback{Verbosity::Normal};
+  std::unique_ptr<Progress> progress;
   Input program;
   OutputSet outputs;
   OutputFile* stp = nullptr;
@@ -223,80 +266,158 @@ cc1_builder::Options builder_options(const ConvertArguments& args, const std::op
   return options;
 }
 
-// The interpreter's warnings (collected in `read`) before the builder's: they come from reading
-// the program.
-std::vector<cc1_builder::Warning> all_warnings(const std::vector<cc1_builder::Warning>& read,
-                                               const std::vector<cc1_builder::Warning>& built) {
-  std::vector<cc1_builder::Warning> all = read;
-  all.insert(all.end(), built.begin(), built.end());
-  return all;
-}
-
-interpreter::Options interpreter_options(const ConvertArguments& args, const Input& program, const setup::ToolList& tools,
-                                         std::vector<cc1_builder::Warning>& warnings) {
+// The interpreter's warnings go to `warnings` (kind "reading"): what it read although the
+// controller's data is missing or the construct has no motion of its own. --strict makes the
+// interpreter refuse them itself, at their place in the program.
+interpreter::Options interpreter_options(const ConvertArguments& args, const ConvertRun& run, const setup::ToolList& tools,
+                                         std::vector<Warning>& warnings) {
+  const Input& program = run.program;
   interpreter::Options interp;
   interp.strict = args.strict;
+  // a program that ends without M2/M30 (or %, END PGM) runs to its last block on the control:
+  // converted, with a warning (refused under --strict)
+  interp.require_program_end = false;
+  interp.machine_functions = args.machine_functions;
   interp.warning = [&warnings](const SourceLocation& where, const std::string& message) {
-    warnings.push_back({where, message});
+    Warning w;
+    w.kind = "reading";
+    w.where = where;
+    w.message = message;
+    warnings.push_back(std::move(w));
   };
   interp.dialect = dialect_of(args.dialect);
-  if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
-    const auto detected = program.text ? interpreter::detect_dialect(*program.text)
-                                       : interpreter::detect_dialect_file(program.path);
-    interp.dialect = detected.dialect;
-    std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
-                 std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
-  }
   if (args.heidenhain_feed_units == "mm/s") interp.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
   interp.tools = tools;
   std::stringstream dirs(args.subroutine_path);
   for (std::string d; std::getline(dirs, d, ':');) {
     if (!d.empty()) interp.subroutine_path.emplace_back(d);
   }
+  if (interp.dialect == interpreter::Dialect::Auto) {  // detect (the reading that takes the whole program), and say which
+    const auto detected = program.text ? interpreter::detect_dialect_reading(*program.text, program.name, interp)
+                                       : interpreter::detect_dialect_reading(program.path, interp);
+    interp.dialect = detected.dialect;
+    run.feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " + detected.reason + ")");
+  }
   return interp;
 }
 
 void interpret(const Input& program, const interpreter::Options& interp, TimedSink& sink) {
-  try {
-    if (program.text) {
-      interpreter::interpret_text(*program.text, program.name, interp, sink);
-    } else {
-      interpreter::interpret_file(program.path, interp, sink);
-    }
-  } catch (...) {
-    sink.clear();
-    throw;
+  if (program.text) {
+    interpreter::interpret_text(*program.text, program.name, interp, sink);
+  } else {
+    interpreter::interpret_file(program.path, interp, sink);
   }
 }
 
-void print_warnings(const std::vector<cc1_builder::Warning>& warnings) {
-  for (const auto& w : warnings) print_warning(w.where, w.message);
+std::string setup_detail(const cc1_builder::Options& options, const ConvertArguments& args) {
+  std::string text = "read " + std::to_string(options.tools.tools().size()) + " tools from " + args.tools;
+  if (options.stock) {
+    const auto& s = *options.stock;
+    char box[160];
+    std::snprintf(box, sizeof box, "; stock %g x %g x %g mm (X%g..%g Y%g..%g Z%g..%g) from ", s.size(0), s.size(1), s.size(2),
+                  s.min[0], s.max[0], s.min[1], s.max[1], s.min[2], s.max[2]);
+    text += box + args.stock;
+  }
+  return text;
 }
+
+std::string seconds(double s) {
+  char text[32];
+  if (s < 1) std::snprintf(text, sizeof text, "%.0f ms", s * 1000);
+  else std::snprintf(text, sizeof text, "%.2f s", s);
+  return text;
+}
+
+std::string count(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+void print_warnings(const std::vector<Warning>& warnings) {
+  for (const auto& w : warnings) print_warning(w.where, w.message + " [" + w.kind + "]");
+}
+
+// After the outputs appeared: the warnings, the one-line summary, and with -v what was written.
+void finish_run(ConvertRun& run, const ConvertArguments& args, const std::vector<Warning>& warnings,
+                const std::string& contents, std::uint64_t bytes) {
+  run.progress->stop();
+  print_warnings(warnings);
+  run.feedback.detail("wrote " + run.stp->display_name() + " (" + std::to_string(bytes) + " bytes)" +
+                      (run.report ? ", " + run.report->display_name() : "") + (run.html ? ", " + run.html->display_name() : ""));
+  run.feedback.summary(run.stp->display_name() + ": " + (args.level == "cc2" ? "CC2, " : "CC1, ") + contents + ", " +
+                       count(warnings.size(), "warning", "warnings") + ", " + seconds(run.feedback.elapsed_s()));
+}
+
+SetupCheckInputs check_inputs(const ConvertArguments& args, const Input& program, const std::optional<setup::Stock>& stock,
+                              const setup::ToolList* tools) {
+  SetupCheckInputs in;
+  in.program = program.name;
+  in.stock = stock;
+  in.stock_file = args.stock;
+  in.tools = tools;
+  in.tools_file = args.tools;
+  in.security_plane = args.security_plane;
+  in.heidenhain_per_minute = (args.dialect == "heidenhain" || args.dialect == "auto") && args.heidenhain_feed_units == "mm/min";
+  return in;
+}
+
+// The setup checks' warnings first (they say the result may be wrong), then the
+// interpreter's (from reading the program), then the builder's.
+std::vector<Warning> all_warnings(const SetupChecks& checks, const std::vector<Warning>& read,
+                                  const std::vector<cc1_builder::Warning>& builder) {
+  std::vector<Warning> all = checks.warnings();
+  all.insert(all.end(), read.begin(), read.end());
+  for (const auto& w : builder) {
+    Warning warning;
+    warning.kind = "representation";
+    warning.where = w.where;
+    warning.message = w.message;
+    all.push_back(std::move(warning));
+  }
+  return all;
+}
+
+// --strict: a warning is an error; nothing is written (the outputs are not committed).
+void refuse_warnings_if_strict(const ConvertArguments& args, const std::vector<Warning>& warnings, Progress& progress) {
+  if (!args.strict || warnings.empty()) return;
+  progress.stop();
+  for (const auto& w : warnings) print_error(w.where, w.message + " [" + w.kind + "]");
+  throw InputError({}, std::to_string(warnings.size()) + (warnings.size() == 1 ? " warning" : " warnings") +
+                           " with --strict: nothing written");
+}
+
 
 // CC1 from a program, streamed: interpreter -> cc1_builder -> (Part 21 writer, report) element
 // by element; the model is never whole in memory.
 int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_point t0) {
+  const TimeLimit limit(args, t0);
   const std::optional<setup::Stock> stock = setup::read_stock(args.stock);
   const cc1_builder::Options options = builder_options(args, stock);
-  std::vector<cc1_builder::Warning> read_warnings;
-  const interpreter::Options interp = interpreter_options(args, run.program, options.tools, read_warnings);
+  run.feedback.detail(setup_detail(options, args));
+  std::vector<Warning> read_warnings;
+  const interpreter::Options interp = interpreter_options(args, run, options.tools, read_warnings);
 
   step_writer::StepncWriteOptions write;
   write.file_name = part21_file_name(run);
   step_writer::StepncStreamWriter writer(write, [&](std::string_view chunk) { run.stp->write(chunk); });
   std::optional<Cc1Report> report;
   if (run.report) report.emplace(*run.report, Cc1Report::Head{run.program.name, args.output, args.level});
-  ElementWriter elements(writer, report ? &*report : nullptr);
+  ProgramFacts facts;
+  SetupChecks checks(check_inputs(args, run.program, stock, &options.tools), &facts);
+  ElementWriter elements(writer, report ? &*report : nullptr, checks);
   cc1_builder::Cc1Builder builder(options, &elements);
-  TimedSink sink(builder, isatty(STDERR_FILENO) != 0, report.has_value());
+  TimedSink sink(builder, facts, *run.progress, report.has_value(), limit);
   const auto t_interpret = Clock::now();
   interpret(run.program, interp, sink);
   const auto t_built = Clock::now();
+  run.feedback.detail("interpreted and built " + count(builder.calls_seen(), "canonical call", "canonical calls") + " in " +
+                      seconds(ms(t_built - t_interpret) / 1000));
   const stepnc::Project project = builder.take_project();
+  checks.finish(project);
+  const std::vector<Warning> warnings = all_warnings(checks, read_warnings, builder.warnings());
+  refuse_warnings_if_strict(args, warnings, *run.progress);
   const std::uint64_t bytes = writer.finish(project);
   const auto t_written = Clock::now();
 
-  const std::vector<cc1_builder::Warning> warnings = all_warnings(read_warnings, builder.warnings());
   if (report) {
     // The writer's and the report's work happens inside the builder's calls; each is counted
     // once, under step_writer. "output" is the report's last part, the syncs and renames.
@@ -304,7 +425,7 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
     Cc1Report::Tail tail;
     tail.canonical_calls = builder.calls_seen();
     tail.output_bytes = bytes;
-    for (const auto& w : warnings) tail.warnings.emplace_back(w.where.to_string(), w.message);
+    tail.warnings = warnings;
     tail.timings_ms = {{"read_inputs", ms(t_interpret - t0)},
                        {"interpreter", ms(t_built - t_interpret) - ms(sink.spent())},
                        {"cc1_builder", ms(sink.spent()) - ms(elements.spent())},
@@ -314,16 +435,20 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
     report->finish(project, tail);
   }
   run.outputs.commit();
-  print_warnings(warnings);
+  finish_run(run, args, warnings,
+             count(elements.workingsteps(), "workingstep", "workingsteps") + ", " + count(project.tools.size(), "tool", "tools"),
+             bytes);
   return 0;
 }
 
 // Every path checked and the program read (standard input) before any work starts.
-ConvertRun open_run(const ConvertArguments& args) {
+ConvertRun open_run(const ConvertArguments& args, Verbosity verbosity) {
   ConvertRun run;
+  run.feedback = Feedback(verbosity);
   if (!args.html.empty() && args.level != "cc2") {
     throw UsageError("--html needs --level cc2 (it draws the recognised features)");
   }
+  if (args.security_plane && !std::isfinite(*args.security_plane)) throw UsageError("--security-plane must be a number");
   if (!args.tools.empty()) require_input_file(args.tools, "--tools");
   if (!args.stock.empty()) require_input_file(args.stock, "--stock");
   run.stp = &run.outputs.add(args.output, "-o");
@@ -331,18 +456,20 @@ ConvertRun open_run(const ConvertArguments& args) {
   if (!args.html.empty()) run.html = &run.outputs.add(args.html, "--html");
   for (const std::string* input : {&args.program, &args.tools, &args.stock}) run.outputs.protect(*input);
   run.program = open_input(args.program, "program");
+  run.progress = std::make_unique<Progress>(run.feedback.progress_wanted());
   return run;
 }
 
-int run_convert(const ConvertArguments& args) {
+int run_convert(const ConvertArguments& args, Verbosity verbosity) {
   const auto t0 = Clock::now();
-  ConvertRun run = open_run(args);
+  ConvertRun run = open_run(args, verbosity);
+  const TimeLimit limit(args, t0);
   const bool part21_input = is_part21_file(run.program);
   if (!part21_input && (args.tools.empty() || args.stock.empty())) {
     throw UsageError("converting a program needs --tools and --stock");
   }
   if (!part21_input && args.level == "cc1") return run_streamed_cc1(args, run, t0);
-  std::vector<cc1_builder::Warning> warnings;
+  std::vector<Warning> warnings;
   std::uint64_t calls = 0;
   stepnc::Project project;
   std::optional<setup::Stock> stock;
@@ -353,27 +480,46 @@ int run_convert(const ConvertArguments& args) {
     t_interpret = Clock::now();
     auto read = run.program.text ? step_writer::read_stepnc(*run.program.text, run.program.name)
                                  : step_writer::read_stepnc_file(run.program.path);
-    for (const auto& d : read.warnings) warnings.push_back({d.where, d.message});
+    for (const auto& d : read.warnings) warnings.push_back({"input", d.where, d.message});
     project = std::move(read.project);
     t_built = Clock::now();
+    SetupChecks checks(check_inputs(args, run.program, stock, nullptr), nullptr);
+    for (const auto& e : project.main_workplan.its_elements) checks.element(project, e);
+    checks.finish(project);
+    warnings.insert(warnings.begin(), checks.warnings().begin(), checks.warnings().end());
   } else {
     const cc1_builder::Options options = builder_options(args, stock);
-    std::vector<cc1_builder::Warning> read_warnings;
-    const interpreter::Options interp = interpreter_options(args, run.program, options.tools, read_warnings);
+    run.feedback.detail(setup_detail(options, args));
+    std::vector<Warning> read_warnings;
+    const interpreter::Options interp = interpreter_options(args, run, options.tools, read_warnings);
     cc1_builder::Cc1Builder builder(options);
-    TimedSink sink(builder, isatty(STDERR_FILENO) != 0, !args.report.empty());
+    ProgramFacts facts;
+    TimedSink sink(builder, facts, *run.progress, !args.report.empty(), limit);
     t_interpret = Clock::now();
     interpret(run.program, interp, sink);
     t_built = Clock::now();
-    warnings = all_warnings(read_warnings, builder.warnings());
+    run.feedback.detail("interpreted and built " + count(builder.calls_seen(), "canonical call", "canonical calls") + " in " +
+                        seconds(ms(t_built - t_interpret) / 1000));
     calls = builder.calls_seen();
     project = builder.take_project();
     builder_spent = sink.spent();
+    SetupChecks checks(check_inputs(args, run.program, stock, &options.tools), &facts);
+    for (const auto& e : project.main_workplan.its_elements) checks.element(project, e);
+    checks.finish(project);
+    warnings = all_warnings(checks, read_warnings, builder.warnings());
   }
   // CC2: the features recognised in the CC1 model, with their workingsteps (cc2_output.hpp).
   std::optional<Cc2Output> cc2;
-  if (args.level == "cc2") cc2 = build_cc2(project, stock, run.program.name);
+  if (args.level == "cc2") {
+    run.progress->set("recognising features");
+    std::function<void()> checkpoint;
+    if (limit.set()) checkpoint = [&limit] { limit.check(); };
+    cc2 = build_cc2(project, stock, run.program.name, checkpoint);
+    run.feedback.detail("recognised " + count(cc2->features.size(), "feature", "features") + " in " +
+                        seconds(ms(Clock::now() - t_built) / 1000));
+  }
   const auto t_recognized = Clock::now();
+  run.progress->set("writing " + run.stp->display_name());
 
   step_writer::StepncWriteOptions write;
   write.file_name = part21_file_name(run);
@@ -384,13 +530,15 @@ int run_convert(const ConvertArguments& args) {
   const auto t_written = Clock::now();
 
   if (cc2) {
-    for (const auto& w : cc2->warnings) {
-      cc1_builder::Warning warning;
-      warning.where.file = run.program.name;
-      warning.message = w;
-      warnings.push_back(std::move(warning));
+    for (const auto& message : cc2->warnings) {
+      Warning w;
+      w.kind = "recognition";
+      w.where.file = run.program.name;
+      w.message = message;
+      warnings.push_back(std::move(w));
     }
   }
+  refuse_warnings_if_strict(args, warnings, *run.progress);
   if (run.report) {
     const double builder_ms = ms(builder_spent);
     nlohmann::ordered_json timings{{"read_inputs", ms(t_interpret - t0)},
@@ -408,11 +556,20 @@ int run_convert(const ConvertArguments& args) {
     HtmlReportInput page;
     page.title = run.program.from_stdin() ? run.program.name : run.program.path.filename().string();
     page.cc2 = &*cc2;
-    for (const auto& w : warnings) page.warnings.push_back(w.where.to_string() + ": " + w.message);
+    for (const auto& w : warnings) {
+      const bool setup = w.kind != "representation" && w.kind != "recognition" && w.kind != "input";
+      (setup ? page.setup_warnings : page.warnings).push_back(w.where.to_string() + ": " + w.message);
+    }
     run.html->write(html_report(page));
   }
   run.outputs.commit();
-  print_warnings(warnings);
+  const stepnc::Project& written = cc2 ? cc2->project : project;
+  std::size_t workingsteps = 0;
+  for (const auto& e : written.main_workplan.its_elements) workingsteps += std::holds_alternative<stepnc::MachiningWorkingstep>(e);
+  finish_run(run, args, warnings,
+             (cc2 ? count(cc2->features.size(), "feature", "features") + ", " : std::string()) +
+                 count(workingsteps, "workingstep", "workingsteps") + ", " + count(written.tools.size(), "tool", "tools"),
+             bytes);
   return 0;
 }
 
@@ -436,8 +593,16 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--security-plane", args->security_plane, "Security plane Z in mm (default: the highest rapid)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
   cmd->add_flag("--strict", args->strict,
-                "Refuse what is otherwise read with a warning (machine builder M codes, G43 without tool lengths)");
-  cmd->callback([args, &exit_code]() { exit_code = run_convert(*args); });
+                "A warning is an error: exit 1, nothing written (the interpreter refuses machine builder M codes, G43 "
+                "without tool lengths at their place)");
+  cmd->add_option("--machine-functions", args->machine_functions,
+                  "M codes that are the machine builder's machine functions (no motion), beyond the dialect's list: "
+                  "read with a warning")
+      ->delimiter(',');
+  cmd->add_option("--max-seconds", args->max_seconds,
+                  "Stop with an error (writing nothing) once the conversion has run this long (default: no limit)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->callback([args, cmd, &exit_code]() { exit_code = run_convert(*args, verbosity_of(*cmd)); });
 }
 
 }  // namespace ncbridge::cli

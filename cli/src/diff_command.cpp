@@ -45,6 +45,12 @@ int run_diff(const DiffArguments& args) {
   if (!std::isfinite(args.tolerance) || args.tolerance < 0) {
     throw UsageError("--tolerance must be a length of 0 or more, not " + std::to_string(args.tolerance));
   }
+  if (args.tolerance > 1) {
+    char tolerance[32];
+    std::snprintf(tolerance, sizeof tolerance, "%g", args.tolerance);
+    print_warning({}, std::string("--tolerance ") + tolerance +
+                          " mm is coarser than any machining tolerance: differences below it are not reported");
+  }
   if (!args.schema.empty()) require_input_file(args.schema, "--schema");
   const Input input_a = open_input(args.a, "first file");
   const Input input_b = open_input(args.b, "second file");

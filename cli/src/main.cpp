@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "errors.hpp"
+#include "ncbridge/common/version.hpp"
 #include "usage_errors.hpp"
 #ifdef NCBRIDGE_HAVE_SERVICES
 #include "ncbridge/bus/bus_error.hpp"
@@ -14,8 +15,12 @@
 int main(int argc, char** argv) {
   using namespace ncbridge::cli;
   CLI::App app{"ncbridge: CNC part programs to STEP-NC (ISO 14649) and back", "ncbridge"};
-  app.set_version_flag("--version", "ncbridge " NCBRIDGE_VERSION);
+  app.set_version_flag("--version", std::string(ncbridge::version_string()));
   app.require_subcommand(1);
+  // -q/-v before or after the command's name (feedback.hpp).
+  app.add_flag("-q,--quiet")->description("Say nothing but warnings and errors: no progress, no summary");
+  app.add_flag("-v,--verbose")->description("Say more: what was read, each phase's time, what was written");
+  app.fallthrough();
   app.footer("Exit status: 0 ok, 1 input error, 2 usage error, 3 output error, 4 service unavailable, "
              "5 files differ (diff). See docs/cli.md.");
   int exit_code = 0;
@@ -23,12 +28,15 @@ int main(int argc, char** argv) {
   add_check_command(app, exit_code);
   add_convert_command(app, exit_code);
   add_diff_command(app, exit_code);
+  add_gcode_command(app, exit_code);
   add_plan_command(app, exit_code);
+  add_optimize_command(app, exit_code);
 #ifdef NCBRIDGE_HAVE_SERVICES
   add_up_command(app, exit_code);
   add_submit_command(app, exit_code);
   add_status_command(app, exit_code);
   add_controller_sim_command(app, exit_code);
+  add_capture_command(app, exit_code);
 #endif
   if (const auto error = command_error(app, argc, argv)) {
     print_error(*error);

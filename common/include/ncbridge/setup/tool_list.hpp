@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "ncbridge/setup/length_units.hpp"
+
 namespace ncbridge::setup {
 
 // Tool kinds, named as in the tool list format and mapped to ISO 14649-111 tool entities.
@@ -52,8 +54,6 @@ class ToolList {
  private:
   std::vector<Tool> tools_;  // sorted by number, unique numbers
 };
-
-enum class LengthUnits : std::uint8_t { Millimeters, Inches };
 
 // The project's tool list: a JSON array (or {"tools": [...]}) or the same in YAML; chosen by
 // extension (.json / .yaml / .yml), else by content. Unknown fields are ignored. Errors
