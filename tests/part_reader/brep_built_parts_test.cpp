@@ -1,12 +1,13 @@
 // Parts built with Open CASCADE in the test and exported as STEP, then read back: the
 // SolidWorks-style circular pocket (its cylinder split in two faces, its circles in halves on the
 // top face), a hole in a pocket's floor (two features, not one), drill points and a countersink,
-// a rounded rectangular pocket; and a STEP file without a solid.
+// a rounded rectangular pocket, a part written in metres; and a STEP file without a solid.
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
@@ -22,10 +23,12 @@
 #include <TopoDS_Face.hxx>
 #include <gp_Ax2.hxx>
 #include <gp_Pln.hxx>
+#include <gp_Trsf.hxx>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/part_reader/brep_reader.hpp"
@@ -200,4 +203,36 @@ TEST(BuiltParts, NotAStepFileIsLocated) {
   } catch (const ncbridge::InputError& e) {
     EXPECT_EQ(e.where().line, 1u) << e.what();
   }
+}
+
+TEST(BuiltParts, AFileInMetresIsReadInMillimetres) {
+  // The part a thousand times smaller, written in millimetres, then its unit made the metre: the
+  // file a CAD system working in metres writes (100 mm as 0.1).
+  gp_Trsf to_metres;
+  to_metres.SetScale(gp_Pnt(0, 0, 0), 0.001);
+  const TopoDS_Shape part = BRepBuilderAPI_Transform(BRepAlgoAPI_Cut(block(), tool(30, 40, 5, -5)).Shape(), to_metres).Shape();
+  const fs::path file = written(part, "block_in_metres.stp");
+  std::string text;
+  {
+    std::ifstream in(file);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string mm = "SI_UNIT(.MILLI.,.METRE.)";
+  const auto at = text.find(mm);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, mm.size(), "SI_UNIT($,.METRE.)");
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
+  ASSERT_NE(text.find("(0.1,"), std::string::npos) << "100 mm written as 0.1";
+
+  const pr::Part read = pr::read_brep_file(file);
+  EXPECT_EQ(read.file_units, "m");
+  ASSERT_TRUE(read.bounds);
+  EXPECT_NEAR(read.bounds->max[0], 100, 1e-6);
+  EXPECT_NEAR(read.bounds->max[2], 20, 1e-6);
+  const auto holes = of_kind(read, pr::FeatureKind::RoundHole);
+  ASSERT_EQ(holes.size(), 1u);
+  EXPECT_NEAR(holes[0]->diameter, 10, 1e-6);
+  EXPECT_NEAR(holes[0]->depth, 20, 1e-6);
+  EXPECT_NEAR(holes[0]->placement.location.x, 30, 1e-6);
+  EXPECT_EQ(holes[0]->bottom, pr::HoleBottom::Through);
 }
