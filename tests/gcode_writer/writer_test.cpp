@@ -2,7 +2,9 @@
 // unrolled motion in every dialect, text conventions of each dialect, and located refusals.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <cstdlib>
 
 #include "ncbridge/common/error.hpp"
@@ -259,3 +261,162 @@ TEST(StepncInterpreter, ToolpathsFollowTheFeaturePlacementOrTheSetup) {
 }
 
 }  // namespace
+
+namespace {
+
+struct Collect final : canonical::Sink {
+  std::vector<Call> calls;
+  void call(const Call& c) override { calls.push_back(c); }
+};
+
+std::vector<Call> calls_of_file(const std::filesystem::path& program, interpreter::Dialect dialect) {
+  interpreter::Options o;
+  o.dialect = dialect;
+  Collect c;
+  interpreter::interpret_file(program, o, c);
+  return c.calls;
+}
+
+std::vector<Call> calls_of_text(const std::string& text, interpreter::Dialect dialect) {
+  interpreter::Options o;
+  o.dialect = dialect;
+  Collect c;
+  interpreter::interpret_text(text, "written", o, c);
+  return c.calls;
+}
+
+bool near(const Pose& a, const Pose& b, double tolerance) {
+  return std::fabs(a.x - b.x) <= tolerance && std::fabs(a.y - b.y) <= tolerance && std::fabs(a.z - b.z) <= tolerance &&
+         std::fabs(a.a - b.a) <= tolerance && std::fabs(a.b - b.b) <= tolerance && std::fabs(a.c - b.c) <= tolerance;
+}
+
+template <class T>
+std::vector<T> only(const std::vector<Call>& calls) {
+  std::vector<T> found;
+  for (const Call& c : calls) {
+    if (const auto* t = std::get_if<T>(&c.data)) found.push_back(*t);
+  }
+  return found;
+}
+
+const std::filesystem::path kGolden = std::filesystem::path(NCBRIDGE_SOURCE_DIR) / "tests/interpreter/golden/programs";
+const std::filesystem::path kDialectPrograms = std::filesystem::path(NCBRIDGE_SOURCE_DIR) / "tests/interpreter/dialects";
+
+}  // namespace
+
+// The listings print a NURBS_FEED as its order only: the control points and weights are compared
+// here, call by call (G5 cubic, G5.1 quadratic, G5.2 with weights, a first weight alone, L, G91,
+// inches), as G5.2/G5.3 written back.
+TEST(Splines, NurbsCurvesReadBackControlPointForControlPoint) {
+  const auto source = calls_of_file(kGolden / "splines_g5_nurbs.ngc", interpreter::Dialect::Rs274Ngc);
+  gcode_writer::Options options;
+  const std::string text = gcode_writer::write_program(source, options);
+  const auto back = calls_of_text(text, interpreter::Dialect::Rs274Ngc);
+  const auto a = only<NurbsFeed>(source), b = only<NurbsFeed>(back);
+  ASSERT_EQ(a.size(), 8u);
+  ASSERT_EQ(a.size(), b.size()) << text;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    SCOPED_TRACE("curve " + std::to_string(i));
+    EXPECT_EQ(a[i].order, b[i].order);
+    ASSERT_EQ(a[i].control_points.size(), b[i].control_points.size()) << text;
+    for (std::size_t k = 0; k < a[i].control_points.size(); ++k) {
+      EXPECT_NEAR(a[i].control_points[k].x, b[i].control_points[k].x, 1e-4);
+      EXPECT_NEAR(a[i].control_points[k].y, b[i].control_points[k].y, 1e-4);
+      EXPECT_NEAR(a[i].control_points[k].weight, b[i].control_points[k].weight, 1e-6);
+    }
+  }
+  const auto motion = ncbridge::testing::compare_motion(listing(source), listing(back));
+  EXPECT_TRUE(motion.equal) << motion.report;
+  EXPECT_NE(text.find("G5.2 P2\n"), std::string::npos) << text;  // the first control point's weight alone
+  EXPECT_NE(text.find(" L4"), std::string::npos) << text;
+  // the other dialects' front-ends read no splines
+  for (gcode_writer::Dialect d : kDialects) {
+    if (d == gcode_writer::Dialect::Rs274Ngc) continue;
+    options.dialect = d;
+    try {
+      gcode_writer::write_program(source, options);
+      ADD_FAILURE() << gcode_writer::dialect_name(d) << " wrote a NURBS curve";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("cannot express a NURBS curve"), std::string::npos) << e.what();
+      EXPECT_EQ(e.where().line, 7u) << e.what();  // the first G5
+    }
+  }
+}
+
+// Probe moves keep their kind (G38.2-G38.5 in RS274/NGC; G31 and MEAS= are G38.3, MEAS=-1 is
+// G38.5) and the reader stands where its simulated probe backed off to, as the source's did.
+TEST(Probing, ProbeMovesReadBackAsTheSameKindInEveryDialectThatHasThem) {
+  const auto golden = calls_of_file(kGolden / "probing_g38.ngc", interpreter::Dialect::Rs274Ngc);
+  const auto skip = calls_of_file(kDialectPrograms / "fanuc/skip_probing.nc", interpreter::Dialect::Fanuc);
+  const auto meas = calls_of_file(kDialectPrograms / "siemens840d/measuring.mpf", interpreter::Dialect::Siemens840D);
+  struct Case {
+    const std::vector<Call>* source;
+    gcode_writer::Dialect to;
+  };
+  const Case cases[] = {{&golden, gcode_writer::Dialect::Rs274Ngc},   {&skip, gcode_writer::Dialect::Rs274Ngc},
+                        {&skip, gcode_writer::Dialect::Fanuc},        {&skip, gcode_writer::Dialect::Mach3},
+                        {&skip, gcode_writer::Dialect::Siemens840D},  {&meas, gcode_writer::Dialect::Siemens840D},
+                        {&meas, gcode_writer::Dialect::Rs274Ngc}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(std::string(gcode_writer::dialect_name(c.to)));
+    gcode_writer::Options options;
+    options.dialect = c.to;
+    const std::string text = gcode_writer::write_program(*c.source, options);
+    const auto back = calls_of_text(text, reader_of(c.to));
+    const auto a = only<StraightProbe>(*c.source), b = only<StraightProbe>(back);
+    ASSERT_FALSE(a.empty());
+    ASSERT_EQ(a.size(), b.size()) << text;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].probe_type, b[i].probe_type) << "probe " << i << "\n" << text;
+      EXPECT_TRUE(near(a[i].end, b[i].end, 1e-4)) << "probe " << i << "\n" << text;
+    }
+    const auto motion = ncbridge::testing::compare_motion(listing(*c.source), listing(back));
+    EXPECT_TRUE(motion.equal) << motion.report << "\n" << text;
+  }
+  // what a dialect's probe move is not
+  const std::pair<gcode_writer::Dialect, std::string> refused[] = {
+      {gcode_writer::Dialect::Fanuc, "fanuc cannot express a probe move that stops with an error when the probe does not trip (G38.2)"},
+      {gcode_writer::Dialect::Siemens840D, "siemens840d cannot express a probe move that stops with an error"},
+      {gcode_writer::Dialect::Heidenhain, "heidenhain cannot express a probe move (G38.x, G31, MEAS=)"}};
+  for (const auto& [d, message] : refused) {
+    gcode_writer::Options options;
+    options.dialect = d;
+    try {
+      gcode_writer::write_program(golden, options);
+      ADD_FAILURE() << gcode_writer::dialect_name(d) << " wrote G38.2";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+      EXPECT_EQ(e.where().line, 8u) << e.what();
+    }
+  }
+}
+
+// A WORKPIECE_PROBING of a CC1 model: to its start, a G38.2 over the expected travel, and the
+// path after it goes on from where the probe backed off (no move back to the trip point).
+TEST(StepncInterpreter, AWorkpieceProbingIsAProbeMove) {
+  stepnc::Project project = one_cut_project();
+  stepnc::WorkpieceProbing probing;
+  probing.its_id = "PROBING1";
+  probing.start_position.location = {0, 0, 5};
+  probing.its_direction = {0, 0, -1};
+  probing.expected_value.theoretical_size = 10;
+  probing.expected_value.upper_limit = 10;
+  probing.expected_value.lower_limit = 10;
+  probing.its_probe = "T4";
+  project.main_workplan.its_elements.insert(project.main_workplan.its_elements.begin(), probing);
+  gcode_writer::Options options;
+  options.tools = gcode_writer::stepnc_tools(project);
+  Collect calls;
+  gcode_writer::interpret_stepnc(project, "probe.stp", {}, calls);
+  const auto probes = only<StraightProbe>(calls.calls);
+  ASSERT_EQ(probes.size(), 1u);
+  EXPECT_EQ(probes[0].probe_type, 0);
+  EXPECT_TRUE(near(probes[0].end, xyz(0, 0, -15), 1e-9));
+  const std::string text = gcode_writer::write_program(calls.calls, options);
+  EXPECT_NE(text.find("G38.2 Z-15\n"), std::string::npos) << text;
+  interpreter::Options back;
+  back.tools = options.tools;
+  const auto listing_back = ncbridge::testing::canon_listing_of_text(text, "p", back);
+  const auto motion = ncbridge::testing::compare_motion(listing(calls.calls), listing_back);
+  EXPECT_TRUE(motion.equal) << motion.report;
+}

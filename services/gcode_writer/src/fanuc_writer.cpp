@@ -129,6 +129,34 @@ void FanucWriter::write_other_action(const Call& call, const MachineState& desir
   WordAddressWriter::write_other_action(call, desired);
 }
 
+// G31: Fanuc's skip function, Mach3's probe move: a straight move of X, Y, Z that stops where the
+// signal comes, without an alarm when it does not (the front-end reads LinuxCNC's G38.3).
+// One-shot for the control; the writer names the next move's G0/G1 anyway.
+void FanucWriter::write_probe(const StraightProbe& probe) {
+  if (incremental_) cannot("a probe move inside a repeated body");
+  if (probe.probe_type == 0) {
+    cannot("a probe move that stops with an error when the probe does not trip (G38.2)",
+           "its G31 move goes on without one (G38.3)");
+  }
+  if (probe.probe_type != 1) {
+    cannot("a probe move away from the workpiece until contact is lost (G38.4, G38.5)",
+           "its G31 move stops when the signal comes");
+  }
+  const Pose end = rounded_pose(probe.end);
+  if (end.a != reader_.position.a || end.b != reader_.position.b || end.c != reader_.position.c) {
+    cannot("a probe move of the A, B or C axis", "G31 moves X, Y and Z");
+  }
+  std::string& s = put(Slot::Motion);
+  s += "G31";
+  axis_words(s, end, true);
+  reader_.apply(StraightProbe{end, 1});
+  note_other_motion(cycle_, 383);
+}
+
+void FanucWriter::write_log(const Data&) {
+  cannot("LinuxCNC's log and print comments ((LOG,...), (PRINT,...))", "the control writes no log file");
+}
+
 bool FanucWriter::has_cycle(int motion) const {
   switch (motion) {
     case 730: case 810: case 820: case 830: case 840: case 850: case 860: case 880: case 890: return true;

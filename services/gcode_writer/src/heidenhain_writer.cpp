@@ -476,6 +476,16 @@ void HeidenhainWriter::action(const Call& call, const MachineState&) {
   if (std::holds_alternative<StraightFeed>(d) || std::holds_alternative<RigidTap>(d)) {
     cannot("spindle-synchronised motion (G33, G33.1)");
   }
+  if (std::holds_alternative<StraightProbe>(d)) {
+    cannot("a probe move (G38.x, G31, MEAS=)",
+           "its touch probe cycle TCH PROBE 0 probes along one axis over the machine's measuring range from a "
+           "pre-position and returns to it");
+  }
+  if (std::holds_alternative<NurbsFeed>(d)) cannot("a NURBS curve (G5, G5.1, G5.2 splines)", "its front-end reads no splines");
+  if (std::holds_alternative<LogOpen>(d) || std::holds_alternative<LogAppend>(d) || std::holds_alternative<LogClose>(d) ||
+      std::holds_alternative<Log>(d) || std::holds_alternative<Print>(d)) {
+    cannot("LinuxCNC's log and print comments ((LOG,...), (PRINT,...))", "the control writes no log file");
+  }
   cannot(std::string(name_of(d)));
 }
 

@@ -185,11 +185,13 @@ class Interpreter {
   void traverse(const Pose& to) {
     emit(StraightTraverse{to});
     position_known_ = true;
+    probe_trip_.reset();
   }
   void feed(const Pose& to) {
     if (state_.feed_mm <= 0) fail("a feed move with no feed rate (MILLING_TECHNOLOGY.feedrate)");
     emit(StraightFeed{to});
     position_known_ = true;
+    probe_trip_.reset();
   }
 
   // To the start of a path: straight from an unknown position (after a tool change, as the
@@ -208,6 +210,8 @@ class Interpreter {
     }
     const Pose& here = state_.position;
     if (distance(here, start) <= kSamePoint) return;
+    // the model's path goes on from where the probe tripped; the tool is where it backed off to
+    if (probe_trip_ && distance(*probe_trip_, start) <= kSamePoint) return;
     if (options_.name_workingsteps) emit(Comment{"ncbridge: connecting move over the security plane"});
     const double high = std::max({security_z, here.z, start.z});
     Pose p = here;
@@ -351,6 +355,35 @@ class Interpreter {
         operation);
   }
 
+  // WORKPIECE_PROBING (docs/cc1.md: how the builder makes one from G38.2/G38.3): from its start
+  // position along its direction, contact expected within its expected value's upper limit from
+  // the nominal value; written as LinuxCNC's G38.2 (contact expected: an error without it) over
+  // that whole travel, at the feed in effect (100 mm/min when there is none: ISO 14649 gives a
+  // probing no feed). The tool in the spindle is the probe.
+  void element(const sn::WorkpieceProbing& w, std::size_t) {
+    name("workpiece probing", w.its_id);
+    const sn::Direction& d = w.its_direction;
+    const double norm = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    const double travel = w.expected_value.theoretical_size + w.expected_value.upper_limit;
+    if (!(norm > 1e-9) || !std::isfinite(norm)) fail("a probing without a direction");
+    if (!(travel > 0) || !(travel < 1e6)) fail("a probing whose expected value gives no travel (nominal + upper limit)");
+    const Pose start = pose(w.start_position.location);
+    Pose end = start;
+    end.x += travel * d.x / norm;
+    end.y += travel * d.y / norm;
+    end.z += travel * d.z / norm;
+    if (!position_known_ || !near(state_.position, start, 1e-9)) traverse(start);
+    if (state_.feed_mm <= 0) {
+      emit(Comment{"ncbridge: the probing has no feed rate: 100 mm/min"});
+      emit(SetFeedRate{100});
+    }
+    emit(TurnProbeOn{});
+    emit(StraightProbe{end, 0});
+    emit(TurnProbeOff{});
+    position_known_ = true;
+    probe_trip_ = end;
+  }
+
   // The first point of the rapid movement right after element `index`, if there is one.
   std::optional<Pose> next_rapid_start(std::size_t index) const {
     const auto& elements = project_.main_workplan.its_elements;
@@ -477,6 +510,7 @@ class Interpreter {
   MachineState state_;
   bool tool_loaded_ = false;
   bool position_known_ = false;
+  std::optional<Pose> probe_trip_;  // where the last probe move tripped, until the tool moves on
   Source source_{0, 0, -1, 0};
   std::optional<CycleTag> tag_;
   std::uint32_t cycle_id_ = 0;
