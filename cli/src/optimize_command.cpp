@@ -8,10 +8,14 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "ncbridge/common/error.hpp"
+#include "ncbridge/interpreter/dialect_detect.hpp"
+#include "ncbridge/setup/tool_list.hpp"
 #include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/toolpath_optimizer/pipeline.hpp"
 
@@ -24,6 +28,10 @@ namespace fs = std::filesystem;
 struct OptimizeArguments {
   std::string program;
   std::string flavor;
+  std::string dialect;
+  std::string tools;
+  std::string subroutine_path;
+  std::string heidenhain_feed_units = "mm/min";
   std::string to;
   bool loops = false;
   int krl_base = 1;
@@ -43,8 +51,52 @@ int run_optimize(const OptimizeArguments& args) {
   using namespace toolpath_optimizer;
   OptimizeRequest request;
   request.input = args.program;
-  if (args.flavor.empty() ? false : !parse_printer_flavor(args.flavor, request.flavor)) {
+  if (!args.flavor.empty() && !args.dialect.empty()) {
+    throw InputError({args.program, 0, 0}, "--flavor (printer G-code) or --dialect (a CNC program), not both");
+  }
+  if (args.flavor.empty() && args.dialect.empty()) {
+    std::string ext = fs::path(args.program).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".gcode" && ext != ".gco") {
+      throw InputError({args.program, 0, 0}, "say what the program is: --flavor marlin|reprap|klipper (printer G-code) "
+                                             "or --dialect rs274ngc|fanuc|mach3|siemens840d|heidenhain|auto");
+    }
+  }
+  if (!args.flavor.empty() && !parse_printer_flavor(args.flavor, request.flavor)) {
     throw InputError({args.program, 0, 0}, "unknown --flavor \"" + args.flavor + "\" (marlin, reprap, klipper)");
+  }
+  if (!args.dialect.empty()) {
+    request.input_kind = InputKind::Cnc;
+    if (!interpreter::parse_dialect_name(args.dialect, request.cnc.dialect)) {
+      throw InputError({args.program, 0, 0}, "unknown --dialect \"" + args.dialect +
+                                                 "\" (rs274ngc, fanuc, mach3, siemens840d, heidenhain, auto)");
+    }
+    if (request.cnc.dialect == interpreter::Dialect::Auto) {
+      const auto detected = interpreter::detect_dialect_file(args.program);
+      request.cnc.dialect = detected.dialect;
+      std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n", std::string(interpreter::dialect_name(detected.dialect)).c_str(),
+                   detected.reason.c_str());
+    }
+    request.cnc.require_program_end = false;
+    if (!args.tools.empty()) {
+      request.cnc.tools = setup::read_tool_list(args.tools);
+    } else {
+      // Positions are program-frame: lengths do not move the path. Tools 0..99 of length and
+      // diameter 0 let G43 H.. and T.. M6 read (docs/optimize.md).
+      std::vector<setup::Tool> tools;
+      for (int n = 0; n <= 99; ++n) {
+        setup::Tool t;
+        t.number = n;
+        t.pocket = n;
+        tools.push_back(t);
+      }
+      request.cnc.tools = setup::ToolList(std::move(tools));
+    }
+    if (args.heidenhain_feed_units == "mm/s") request.cnc.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
+    std::stringstream dirs(args.subroutine_path);
+    for (std::string d; std::getline(dirs, d, ':');) {
+      if (!d.empty()) request.cnc.subroutine_path.emplace_back(d);
+    }
   }
   if (!(args.tolerance > 0)) throw InputError({args.program, 0, 0}, "--tolerance must be greater than 0");
   if (args.min_segment < 0) throw InputError({args.program, 0, 0}, "--min-segment must not be negative");
@@ -61,6 +113,8 @@ int run_optimize(const OptimizeArguments& args) {
     request.output = OutputFormat::Krl;
   } else if (!args.to.empty() && args.to != "gcode") {
     throw InputError({args.program, 0, 0}, "unknown --to \"" + args.to + "\" (gcode, krl)");
+  } else if (request.input_kind == InputKind::Cnc) {
+    throw InputError({args.program, 0, 0}, "a CNC program is written with --to krl");
   }
   const fs::path output(args.output);
   fs::path dat;
@@ -122,8 +176,13 @@ int run_optimize(const OptimizeArguments& args) {
 void add_optimize_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<OptimizeArguments>();
   CLI::App* cmd = app.add_subcommand("optimize", "Rewrite a linearised toolpath with merged lines, arcs and loops");
-  cmd->add_option("program", args->program, "Printer G-code (--flavor)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("program", args->program, "Printer G-code (--flavor) or a CNC program (--dialect)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--flavor", args->flavor, "Printer firmware the G-code is for: marlin, reprap, klipper");
+  cmd->add_option("--dialect", args->dialect, "CNC program dialect: rs274ngc, fanuc, mach3, siemens840d, heidenhain, auto");
+  cmd->add_option("--tools", args->tools, "Tool list of a CNC program (JSON or YAML, docs/formats/tools.md)")->check(CLI::ExistingFile);
+  cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
+  cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units, "Unit of Heidenhain F words (mm/min or mm/s)")
+      ->check(CLI::IsMember({"mm/min", "mm/s"}));
   cmd->add_option("-o,--output", args->output, "Output file (KRL: NAME.src, and NAME.dat beside it)")->required();
   cmd->add_option("--to", args->to, "Output: gcode (the input's flavour, default) or krl");
   cmd->add_flag("--loops", args->loops, "Write repeated layers once, as a loop (KRL FOR)");

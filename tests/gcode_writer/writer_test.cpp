@@ -152,6 +152,25 @@ TEST(Dialects, FanucNumbersCarryADecimalPoint) {
   EXPECT_EQ(text.rfind("%\n"), text.size() - 2) << text;
 }
 
+TEST(Dialects, APathToleranceIsNotReadAsAnArcsTurns) {
+  // G64 P0.1 on the block of a G2 would be its P (turns): the mode goes on a block of its own.
+  gcode_writer::Options options;
+  std::vector<Call> calls = start_up();
+  calls.push_back(at(StraightTraverse{xyz(0, 0, 0)}));
+  calls.push_back(at(SetFeedRate{300}));
+  calls.push_back(at(SetMotionControlMode{MotionControlMode::Continuous, 0.1}));
+  calls.push_back(at(SetNaivecamTolerance{0.01}));
+  calls.push_back(at(ArcFeed{10, 0, 5, 0, -1, 0, 0, 0, 0, 0, 0, 0}));
+  calls.push_back(at(ProgramEnd{}));
+  const std::string text = gcode_writer::write_program(calls, options);
+  const auto arc = text.find("G2 ");
+  ASSERT_NE(arc, std::string::npos) << text;
+  EXPECT_EQ(text.substr(text.rfind('\n', arc) + 1, text.find('\n', arc) - text.rfind('\n', arc)).find('P'), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("G64 P0.1 Q0.01"), std::string::npos) << text;
+  EXPECT_NO_THROW(read_back(text, gcode_writer::Dialect::Rs274Ngc)) << text;
+}
+
 TEST(Refusals, NameTheConstructTheDialectAndTheSourceLine) {
   gcode_writer::Options options;
   options.dialect = gcode_writer::Dialect::Fanuc;

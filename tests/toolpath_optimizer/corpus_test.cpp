@@ -10,6 +10,7 @@
 #include <regex>
 #include <sstream>
 
+#include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/toolpath_optimizer/pipeline.hpp"
 #include "support.hpp"
 
@@ -111,6 +112,52 @@ TEST_P(ArcsCorpusKrl, ReadsBackWithinTheBand) {
   std::cout << GetParam() << " to KRL: " << result.motion_blocks_in << " -> " << result.motion_blocks_out
             << " motion statements, " << result.loops.loops << " loops\n";
 }
+
+// The CNC files of the corpus, read through the interpreter (dialect detected), to KRL.
+std::vector<std::string> cnc_files() {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(kArcs)) {
+    if (entry.path().filename().string().rfind("cnc_", 0) == 0) files.push_back(entry.path().filename().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+class CncCorpusKrl : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
+
+TEST_P(CncCorpusKrl, ReadsBackWithinTheBand) {
+  const auto& [file, tolerance] = GetParam();
+  OptimizeRequest request;
+  request.input = kArcs / file;
+  request.input_kind = InputKind::Cnc;
+  request.cnc.dialect = interpreter::detect_dialect_file(request.input).dialect;
+  request.cnc.require_program_end = false;
+  std::vector<setup::Tool> tools(1);
+  tools[0].number = tools[0].pocket = 3;  // the HSM program's T3 (lengths do not move the path)
+  request.cnc.tools = setup::ToolList(tools);
+  request.output_name = file + ".src";
+  request.output = OutputFormat::Krl;
+  request.optimizer.tolerance_mm = tolerance;
+  std::string src, dat;
+  OutputSinks sinks;
+  sinks.main = [&](std::string_view chunk) { src.append(chunk); };
+  sinks.data = [&](std::string_view chunk) { dat.append(chunk); };
+  const OptimizeResult result = optimize(request, sinks);
+  ASSERT_TRUE(result.deviation.has_value());
+  EXPECT_TRUE(result.deviation->passed(tolerance)) << result.deviation->largest();
+  EXPECT_GT(result.deviation->spans, 100u);
+  EXPECT_LT(result.motion_blocks_out, result.motion_blocks_in);
+  std::cout << file << " @" << tolerance << " to KRL: " << result.motion_blocks_in << " -> " << result.motion_blocks_out
+            << " motion statements, " << result.stats.arcs << " arcs, largest deviation " << result.deviation->largest() << "\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, CncCorpusKrl,
+                         ::testing::Combine(::testing::ValuesIn(cnc_files()), ::testing::Values(0.025, 0.005)),
+                         [](const auto& test) {
+                           std::string name = std::get<0>(test.param);
+                           name = name.substr(0, name.find('.'));
+                           return name + (std::get<1>(test.param) == 0.025 ? "_25um" : "_5um");
+                         });
 
 INSTANTIATE_TEST_SUITE_P(Files, ArcsCorpusKrl, ::testing::ValuesIn(printer_files()), [](const auto& test) {
   return test.param.substr(0, test.param.find('.'));

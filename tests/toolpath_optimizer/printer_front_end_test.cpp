@@ -99,7 +99,7 @@ TEST(PrinterFrontEnd, AbsoluteAndRelativeExtrusionAsEachFirmwareHasIt) {
   EXPECT_DOUBLE_EQ(motions(end_script, PrinterFlavor::Klipper)[1].extrusion, -1);
   EXPECT_DOUBLE_EQ(motions(end_script, PrinterFlavor::RepRapFirmware)[1].extrusion, -11);
   EXPECT_DOUBLE_EQ(motions(end_script, PrinterFlavor::Marlin)[2].end.z, 2);  // relative Z
-  EXPECT_TRUE(motions(end_script, PrinterFlavor::Marlin)[2].printer.fixed);  // G91 moves are kept
+  EXPECT_TRUE(motions(end_script, PrinterFlavor::Marlin)[2].keep);  // G91 moves are kept
 }
 
 TEST(PrinterFrontEnd, G92ResetsAndRetractionsAreFilamentOnlyMoves) {

@@ -296,6 +296,23 @@ class Interpreter {
     if (split) prepare_for_next_workingstep(index, true);
   }
 
+  // A WORKPIECE_PROBING (docs/cc1.md): the probe moves from its start along its direction until
+  // it touches, expected within expected_value of the start; as G38.2 to the end of the range
+  // (theoretical size + upper limit), at the feed in effect.
+  void element(const sn::WorkpieceProbing& w, std::size_t) {
+    name("workpiece probing", w.its_id);
+    const double reach = w.expected_value.theoretical_size + w.expected_value.upper_limit;
+    const sn::Direction& d = w.its_direction;
+    const double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    if (!(reach > 0) || !(length > 0)) fail("a workpiece probing with no travel (expected_value and its_direction)");
+    if (state_.feed_mm <= 0) fail("a workpiece probing with no feed rate before it");
+    const sn::CartesianPoint& s = w.start_position.location;
+    go_to(pose(Frame{}.point(s)), w.its_secplane.position.location.z, true);
+    const sn::CartesianPoint end{s.x + d.x / length * reach, s.y + d.y / length * reach, s.z + d.z / length * reach};
+    emit(StraightProbe{pose(Frame{}.point(end)), 0});
+    position_known_ = true;  // as the CC1 builder reads a probe move: the path goes on from its end
+  }
+
   // The tool, spindle and coolant of the cut an approach leads to are there before it (the
   // program changed the tool and started the spindle before it moved up to the cut); between
   // two rapid movements only the tool changes.

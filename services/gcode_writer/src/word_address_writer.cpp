@@ -599,6 +599,8 @@ void WordAddressWriter::arc(const ArcFeed& a) {
     if (arc_radius_ok(c1, c2, start.*p.first, start.*p.second, end.*p.first, end.*p.second, inch)) break;
     if (decimals >= length_decimals() + 3) cannot("an arc whose end is not on its circle");
   }
+  // A path mode's P (G64 P..) waiting for this block would be read as the arc's turns.
+  if (slot_text_[static_cast<int>(Slot::Control)].find('P') != std::string::npos) flush();
   std::string& s = put(Slot::Motion);
   const int motion = a.rotation < 0 ? 20 : 30;
   s += motion == 20 ? "G2" : "G3";

@@ -135,18 +135,22 @@ void sweep(const Shape& shape, Distance&& distance, double tol, double step, dou
 void PathRecorder::add(const Element& e, double z_shift) {
   if (const auto* m = std::get_if<Motion>(&e.item)) {
     if (!m->start_known) return;
+    // In mm whatever the program's units.
+    const double k = m->units == canonical::Units::Inches ? 25.4 : 1.0;
     PathPiece p;
     p.kind = m->kind;
-    p.start = m->start;
-    p.end = m->end;
-    p.start.z += z_shift;
-    p.end.z += z_shift;
+    p.start = k * m->start;
+    p.end = k * m->end;
+    p.start.z += k * z_shift;
+    p.end.z += k * z_shift;
     p.arc = m->arc;
+    p.arc.first_centre *= k;
+    p.arc.second_centre *= k;
     if (p.kind == MotionKind::Arc && z_shift != 0) {
-      if (p.arc.plane == canonical::Plane::YZ) p.arc.second_centre += z_shift;
-      if (p.arc.plane == canonical::Plane::XZ) p.arc.first_centre += z_shift;
+      if (p.arc.plane == canonical::Plane::YZ) p.arc.second_centre += k * z_shift;
+      if (p.arc.plane == canonical::Plane::XZ) p.arc.first_centre += k * z_shift;
     }
-    p.extrusion = m->extrusion;
+    p.extrusion = k * m->extrusion;
     p.line = m->source.line;
     if (is_point(p) && p.extrusion == 0) return;  // moves nothing
     pieces.push_back(p);

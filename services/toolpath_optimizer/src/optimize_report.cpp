@@ -1,6 +1,7 @@
 // The --report JSON of `ncbridge optimize` (docs/formats/optimize-report.md).
 #include <nlohmann/json.hpp>
 
+#include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/toolpath_optimizer/pipeline.hpp"
 
 namespace ncbridge::toolpath_optimizer {
@@ -10,7 +11,8 @@ std::string report_json(const OptimizeRequest& request, const OptimizeResult& r)
   json report;
   report["input"] = request.input.string();
   report["output"] = request.output_name;
-  report["flavor"] = std::string(printer_flavor_name(request.flavor));
+  if (request.input_kind == InputKind::Cnc) report["dialect"] = std::string(interpreter::dialect_name(request.cnc.dialect));
+  else report["flavor"] = std::string(printer_flavor_name(request.flavor));
   report["to"] = request.output == OutputFormat::Krl ? "krl" : "gcode";
   report["tolerance_mm"] = request.optimizer.tolerance_mm;
   report["min_segment_mm"] = request.optimizer.min_segment_mm;

@@ -23,7 +23,7 @@ bool rides_along(const Element& e) {
 Optimizer::Optimizer(const OptimizerOptions& options, ElementSink& out) : options_(options), out_(out) {}
 
 bool Optimizer::fittable(const Motion& m) const {
-  return m.kind != MotionKind::Arc && m.start_known && !m.printer.fixed && !m.rotary_moves && !(m.start == m.end);
+  return m.kind != MotionKind::Arc && m.start_known && !m.keep && !m.rotary_moves && !(m.start == m.end);
 }
 
 bool Optimizer::continues_run(const Motion& m) const {

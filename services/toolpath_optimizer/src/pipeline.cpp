@@ -9,6 +9,8 @@
 #include <stdexcept>
 
 #include "ncbridge/common/error.hpp"
+#include "ncbridge/toolpath_optimizer/block_count.hpp"
+#include "ncbridge/toolpath_optimizer/canonical_bridge.hpp"
 #include "ncbridge/toolpath_optimizer/printer_writer.hpp"
 
 namespace ncbridge::toolpath_optimizer {
@@ -58,6 +60,17 @@ class Progress final : public ElementSink {
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
+BlockCounts count_file_blocks(const std::filesystem::path& path, bool heidenhain) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.string().c_str(), "rb"), &std::fclose);
+  if (!file) throw InputError({path.string(), 0, 0}, "cannot open the file");
+  BlockCounter counter(heidenhain);
+  std::string buffer(1 << 20, '\0');
+  for (std::size_t got; (got = std::fread(buffer.data(), 1, buffer.size(), file.get())) > 0;) {
+    counter.text(std::string_view(buffer.data(), got));
+  }
+  return counter.finish();
+}
+
 }  // namespace
 
 OptimizeResult optimize(const OptimizeRequest& request, const OutputSinks& output) {
@@ -65,6 +78,10 @@ OptimizeResult optimize(const OptimizeRequest& request, const OutputSinks& outpu
   OptimizeResult result;
   if (!(request.optimizer.tolerance_mm > 0)) {
     throw InputError({request.input.string(), 0, 0}, "the tolerance must be greater than 0");
+  }
+  const bool cnc = request.input_kind == InputKind::Cnc;
+  if (cnc && request.output == OutputFormat::PrinterGcode) {
+    throw InputError({request.input.string(), 0, 0}, "a CNC program is not written as printer G-code: say --to");
   }
   if (request.loops && request.output == OutputFormat::PrinterGcode) {
     throw InputError({request.input.string(), 0, 0}, "printer G-code has no loop construct: --loops needs --to krl or a CNC dialect");
@@ -76,7 +93,7 @@ OptimizeResult optimize(const OptimizeRequest& request, const OutputSinks& outpu
     // CIRC is a plane circle through an auxiliary point written with krl.decimals.
     optimizer_options.helical = false;
     optimizer_options.margin_mm = std::max(optimizer_options.margin_mm, 3 * std::pow(10.0, -krl_options.decimals));
-    krl_options.extruder = true;
+    krl_options.extruder = !cnc;
     krl_options.approximation_mm = request.optimizer.tolerance_mm;
     if (krl_options.source.empty()) krl_options.source = request.input.filename().string();
   }
@@ -118,12 +135,23 @@ OptimizeResult optimize(const OptimizeRequest& request, const OutputSinks& outpu
   Optimizer optimizer(optimizer_options, *after_optimizer);
   Tee tee(optimizer, in_rec);
   Progress progress(tee, request.progress);
-  const PrinterCounts in = read_printer_file(request.input, request.flavor, progress);
-  result.bytes_in = in.bytes;
-  result.lines_in = in.lines;
-  result.commands_in = in.commands;
-  result.motion_blocks_in = in.motion_blocks;
-  result.arcs_in = in.arcs;
+  if (cnc) {
+    const BlockCounts in = count_file_blocks(request.input, request.cnc.dialect == interpreter::Dialect::Heidenhain);
+    result.bytes_in = in.bytes;
+    result.lines_in = in.lines;
+    result.commands_in = in.commands;
+    result.motion_blocks_in = in.motion_blocks;
+    result.arcs_in = in.arcs;
+    CanonicalFrontEnd front_end(progress);
+    interpreter::interpret_file(request.input, request.cnc, front_end);
+  } else {
+    const PrinterCounts in = read_printer_file(request.input, request.flavor, progress);
+    result.bytes_in = in.bytes;
+    result.lines_in = in.lines;
+    result.commands_in = in.commands;
+    result.motion_blocks_in = in.motion_blocks;
+    result.arcs_in = in.arcs;
+  }
   if (printer_writer) {
     result.bytes_out = printer_writer->bytes();
     result.lines_out = printer_writer->lines();

@@ -349,7 +349,7 @@ void PrinterReader::line(std::string_view text) {
     m.printer.has_e = has_e;
     m.printer.has_f = has_f;
     m.printer.crlf = crlf;
-    m.printer.fixed = fixed || !m.start_known;
+    m.keep = fixed || !m.start_known;
     position_ = end;
     sink_.element(Element{std::move(m)});
     return;

@@ -33,7 +33,8 @@ struct PathPiece {
   std::uint32_t line = 0;
 };
 
-// Collects the path of an element stream, loops expanded; skips motions from an unknown position.
+// Collects the path of an element stream in mm, loops expanded; skips motions from an unknown
+// position and motions that move nothing.
 class PathRecorder final : public ElementSink {
  public:
   void element(Element&& e) override;
@@ -44,7 +45,7 @@ class PathRecorder final : public ElementSink {
 };
 
 struct DeviationOptions {
-  double tolerance = 0.025;             // the band being checked, program units
+  double tolerance = 0.025;             // the band being checked, mm
   double extrusion_tolerance = 1e-4;    // filament per motion, absolute (plus 1e-6 relative)
   double vertex_match = 2e-4;           // an output end is an input vertex this close (rounding)
   std::size_t max_problems = 20;        // problems listed in the report

@@ -1,7 +1,8 @@
 #pragma once
-// `ncbridge optimize` as one call: a front-end (printer G-code), the optimizer, a writer, and the
-// deviation checker reading the written text back as it is written. The caller owns the output
-// files (and commits them only when this returns).
+// `ncbridge optimize` as one call: a front-end (printer G-code, or a CNC program through the
+// interpreter), the optimizer, a writer, and the deviation checker reading the written text back
+// with the output's own front-end. The caller owns the output files (and commits them only when
+// this returns).
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -9,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/toolpath_optimizer/deviation_checker.hpp"
 #include "ncbridge/toolpath_optimizer/krl.hpp"
 #include "ncbridge/toolpath_optimizer/loop_detector.hpp"
@@ -22,9 +24,16 @@ enum class OutputFormat : std::uint8_t {
   Krl,           // KUKA KRL .src and .dat
 };
 
+enum class InputKind : std::uint8_t {
+  Printer,  // printer G-code, `flavor`
+  Cnc,      // a CNC program in `cnc.dialect`, through the interpreter
+};
+
 struct OptimizeRequest {
   std::filesystem::path input;
+  InputKind input_kind = InputKind::Printer;
   PrinterFlavor flavor = PrinterFlavor::Marlin;
+  interpreter::Options cnc;          // dialect, tools, subroutine path
   OutputFormat output = OutputFormat::PrinterGcode;
   std::string output_name;           // for messages
   OptimizerOptions optimizer;

@@ -48,7 +48,6 @@ class PrinterReader {
   const PrinterCounts& counts() const { return counts_; }
 
  private:
-  void motion(std::string_view text, std::string_view code, int g, bool fixed);
   [[noreturn]] void fail(std::size_t column, const std::string& message) const;
 
   std::string file_;

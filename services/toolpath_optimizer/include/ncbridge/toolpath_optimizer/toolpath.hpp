@@ -51,7 +51,6 @@ struct PrinterSyntax {
   bool has_e = false;           // the line had an E word
   bool has_f = false;           // the line had an F word (the feed changed or was restated here)
   bool crlf = false;            // the line ended with CR LF
-  bool fixed = false;           // it must be written as it came (other words, a checksum, G91...)
 };
 
 struct Motion {
@@ -63,6 +62,8 @@ struct Motion {
   std::array<double, 6> rotary{};  // a b c u v w at the end (CNC); a motion that moves them is kept
   bool rotary_moves = false;
   bool start_known = true;         // false after homing: the start (or end) is not known
+  bool keep = false;               // written as it came, never merged (a printer line with other
+                                   // words, a checksum, G91; a canned cycle's move ...)
   canonical::Units units = canonical::Units::Millimeters;
   canonical::Source source;        // where it came from (line 0: made by the optimizer)
   std::uint32_t blocks = 1;        // input motion blocks this motion stands for
@@ -70,7 +71,7 @@ struct Motion {
 };
 
 // A printer line that is not a motion (or a motion the front-end keeps as written, see
-// PrinterSyntax::fixed): written back exactly as it came, in place.
+// Motion::keep): written back exactly as it came, in place.
 enum class LineRole : std::uint8_t {
   Blank,        // empty or white space only
   Comment,      // only a comment
