@@ -90,6 +90,25 @@ class Siemens840dWriter final : public WordAddressWriter {
   }
   void sync_control(const MachineState& desired) override {
     if (desired.control == MotionControlMode::ExactStop) cannot("exact stop mode (G61.1)");
+    // G64 P (LinuxCNC's path tolerance, its naive-CAM tolerance the same): CYCLE832 with the
+    // tolerance, the front-end reads it back as that G64 P
+    if (desired.control == MotionControlMode::Continuous && desired.tolerance > 0 &&
+        near(desired.naive_tolerance, desired.tolerance, 1e-9)) {
+      const double p = length(desired.tolerance);
+      if (reader_.control == MotionControlMode::Continuous && near(reader_.tolerance, p, 1e-9) &&
+          near(reader_.naive_tolerance, p, 1e-9)) {
+        return;
+      }
+      flush();
+      std::string& s = put(Slot::NonModal);
+      s += "CYCLE832(";
+      append_number(s, p, style_);
+      s += ",0,1)";
+      flush();
+      reader_.apply(SetMotionControlMode{MotionControlMode::Continuous, p});
+      reader_.apply(SetNaivecamTolerance{p});
+      return;
+    }
     sync_control_without_tolerance(desired);
   }
   // G60 (exact stop, modal) is the executor's exact path; G64 its continuous mode.

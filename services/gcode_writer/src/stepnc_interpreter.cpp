@@ -304,13 +304,19 @@ class Interpreter {
     const double reach = w.expected_value.theoretical_size + w.expected_value.upper_limit;
     const sn::Direction& d = w.its_direction;
     const double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-    if (!(reach > 0) || !(length > 0)) fail("a workpiece probing with no travel (expected_value and its_direction)");
+    if (!(reach > 0) || !(reach < 1e6) || !(length > 1e-9) || !std::isfinite(length)) {
+      fail("a workpiece probing with no travel (expected_value and its_direction)");
+    }
     if (state_.feed_mm <= 0) fail("a workpiece probing with no feed rate before it");
     const sn::CartesianPoint& s = w.start_position.location;
     go_to(pose(Frame{}.point(s)), w.its_secplane.position.location.z, true);
     const sn::CartesianPoint end{s.x + d.x / length * reach, s.y + d.y / length * reach, s.z + d.z / length * reach};
-    emit(StraightProbe{pose(Frame{}.point(end)), 0});
+    const Pose trip = pose(Frame{}.point(end));
+    emit(TurnProbeOn{});
+    emit(StraightProbe{trip, 0});
+    emit(TurnProbeOff{});
     position_known_ = true;  // as the CC1 builder reads a probe move: the path goes on from its end
+    probe_trip_ = trip;
   }
 
   // The tool, spindle and coolant of the cut an approach leads to are there before it (the
@@ -370,35 +376,6 @@ class Interpreter {
           }
         },
         operation);
-  }
-
-  // WORKPIECE_PROBING (docs/cc1.md: how the builder makes one from G38.2/G38.3): from its start
-  // position along its direction, contact expected within its expected value's upper limit from
-  // the nominal value; written as LinuxCNC's G38.2 (contact expected: an error without it) over
-  // that whole travel, at the feed in effect (100 mm/min when there is none: ISO 14649 gives a
-  // probing no feed). The tool in the spindle is the probe.
-  void element(const sn::WorkpieceProbing& w, std::size_t) {
-    name("workpiece probing", w.its_id);
-    const sn::Direction& d = w.its_direction;
-    const double norm = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-    const double travel = w.expected_value.theoretical_size + w.expected_value.upper_limit;
-    if (!(norm > 1e-9) || !std::isfinite(norm)) fail("a probing without a direction");
-    if (!(travel > 0) || !(travel < 1e6)) fail("a probing whose expected value gives no travel (nominal + upper limit)");
-    const Pose start = pose(w.start_position.location);
-    Pose end = start;
-    end.x += travel * d.x / norm;
-    end.y += travel * d.y / norm;
-    end.z += travel * d.z / norm;
-    if (!position_known_ || !near(state_.position, start, 1e-9)) traverse(start);
-    if (state_.feed_mm <= 0) {
-      emit(Comment{"ncbridge: the probing has no feed rate: 100 mm/min"});
-      emit(SetFeedRate{100});
-    }
-    emit(TurnProbeOn{});
-    emit(StraightProbe{end, 0});
-    emit(TurnProbeOff{});
-    position_known_ = true;
-    probe_trip_ = end;
   }
 
   // The first point of the rapid movement right after element `index`, if there is one.
