@@ -503,3 +503,27 @@ TEST(StepncInterpreter, AProbingWithoutFeedOrTravelIsALocatedError) {
     }
   }
 }
+
+// Fanuc's additional work offset (G54.1 Pn, read as coordinate system 9) is written back as
+// G54.1 P1 with its values by G10 L20 P1; SINUMERIK's CYCLE832 (read as G64 P) as CYCLE832.
+TEST(Dialects, FanucAdditionalOffsetAndSinumerikTolerance) {
+  const auto fanuc = calls_of_file(kDialectPrograms / "fanuc/macro_shop.nc", interpreter::Dialect::Fanuc);
+  gcode_writer::Options options;
+  options.dialect = gcode_writer::Dialect::Fanuc;
+  const std::string nc = gcode_writer::write_program(fanuc, options);
+  EXPECT_NE(nc.find("G10 L20 P1 X"), std::string::npos) << nc;
+  EXPECT_NE(nc.find("G54.1 P1"), std::string::npos) << nc;
+  const auto nc_back = calls_of_text(nc, interpreter::Dialect::Fanuc);
+  const auto nc_motion = ncbridge::testing::compare_motion(listing(fanuc), listing(nc_back));
+  EXPECT_TRUE(nc_motion.equal) << nc_motion.report << "\n" << nc;
+  options.dialect = gcode_writer::Dialect::Mach3;
+  EXPECT_THROW(gcode_writer::write_program(fanuc, options), InputError);  // Mach3 has no G54.1
+
+  const auto siemens = calls_of_file(kDialectPrograms / "siemens840d/shop_program.mpf", interpreter::Dialect::Siemens840D);
+  options.dialect = gcode_writer::Dialect::Siemens840D;
+  const std::string mpf = gcode_writer::write_program(siemens, options);
+  EXPECT_NE(mpf.find("CYCLE832(0.02,0,1)"), std::string::npos) << mpf;
+  const auto mpf_back = calls_of_text(mpf, interpreter::Dialect::Siemens840D);
+  const auto mpf_motion = ncbridge::testing::compare_motion(listing(siemens), listing(mpf_back));
+  EXPECT_TRUE(mpf_motion.equal) << mpf_motion.report;
+}
