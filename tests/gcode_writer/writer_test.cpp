@@ -11,6 +11,7 @@
 #include "ncbridge/gcode_writer/program_writer.hpp"
 #include "ncbridge/gcode_writer/stepnc_interpreter.hpp"
 #include "ncbridge/interpreter/canon_printer.hpp"
+#include "ncbridge/setup/tool_list.hpp"
 #include "support/listing.hpp"
 #include "support/same_motion.hpp"
 
@@ -526,4 +527,40 @@ TEST(Dialects, FanucAdditionalOffsetAndSinumerikTolerance) {
   const auto mpf_back = calls_of_text(mpf, interpreter::Dialect::Siemens840D);
   const auto mpf_motion = ncbridge::testing::compare_motion(listing(siemens), listing(mpf_back));
   EXPECT_TRUE(mpf_motion.equal) << mpf_motion.report;
+}
+
+// Heidenhain's TCH PROBE 0 written back: the pre-position rapid, the probe move over the
+// measuring range at the probing feed and the rapid back are one cycle (0.0 axis and direction,
+// 0.1 the pre-position); a probe move without the rapid back is refused at its own line.
+TEST(Probing, HeidenhainTouchProbeCycleIsWrittenBack) {
+  interpreter::Options reading;
+  reading.dialect = interpreter::Dialect::Heidenhain;
+  reading.tools = setup::read_tool_list(kDialectPrograms / "parts/tools.json");
+  Collect read;
+  interpreter::interpret_file(kDialectPrograms / "heidenhain/touch_probe.h", reading, read);
+  const auto& source = read.calls;
+  gcode_writer::Options options;
+  options.dialect = gcode_writer::Dialect::Heidenhain;
+  options.tools = reading.tools;
+  const std::string text = gcode_writer::write_program(source, options);
+  EXPECT_NE(text.find("TCH PROBE 0.0 REF. PLANE Q1999 Z-\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("TCH PROBE 0.1 X+15 Y+25 Z+5\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("TCH PROBE 0.0 REF. PLANE Q1999 X+\n"), std::string::npos) << text;
+  Collect back_calls;
+  interpreter::interpret_text(text, "written", reading, back_calls);
+  const auto& back = back_calls.calls;
+  EXPECT_EQ(only<StraightProbe>(back).size(), 2u);
+  const auto motion = ncbridge::testing::compare_motion(listing(source), listing(back));
+  EXPECT_TRUE(motion.equal) << motion.report << "\n" << text;
+
+  const auto skip = calls_of_file(kDialectPrograms / "fanuc/skip_probing.nc", interpreter::Dialect::Fanuc);
+  try {
+    gcode_writer::write_program(skip, options);
+    ADD_FAILURE() << "heidenhain wrote a G31 without the return";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("heidenhain cannot express a probe move not followed by a rapid back"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.where().line, 7u) << e.what();
+  }
 }
