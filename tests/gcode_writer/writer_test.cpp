@@ -478,9 +478,9 @@ TEST(StepncInterpreter, AWorkpieceProbingIsAProbeMove) {
   }
 }
 
-// A probing with no feed before it (ISO 14649 gives WORKPIECE_PROBING none) or no travel is a
-// located error naming the element.
-TEST(StepncInterpreter, AProbingWithoutFeedOrTravelIsALocatedError) {
+// A probing with no travel is a located error naming the element; one before the first cut
+// (no feed yet: ISO 14649 gives WORKPIECE_PROBING none) probes at 100 mm/min, said in a comment.
+TEST(StepncInterpreter, AProbingWithoutTravelIsALocatedErrorWithoutFeedIsAt100) {
   for (const bool no_travel : {false, true}) {
     stepnc::Project project = one_cut_project();
     stepnc::WorkpieceProbing probing;
@@ -496,11 +496,19 @@ TEST(StepncInterpreter, AProbingWithoutFeedOrTravelIsALocatedError) {
     Collect calls;
     try {
       gcode_writer::interpret_stepnc(project, "probe.stp", {}, calls);
-      ADD_FAILURE() << "a probing with no " << (no_travel ? "travel" : "feed") << " was written";
+      EXPECT_FALSE(no_travel) << "a probing with no travel was written";
+      std::vector<double> feeds;
+      for (const Call& c : calls.calls) {
+        if (const auto* f = std::get_if<SetFeedRate>(&c.data)) feeds.push_back(f->rate);
+        if (std::holds_alternative<StraightProbe>(c.data)) break;
+      }
+      ASSERT_FALSE(feeds.empty());
+      EXPECT_DOUBLE_EQ(feeds.back(), 100);
     } catch (const InputError& e) {
+      EXPECT_TRUE(no_travel) << e.what();
       EXPECT_EQ(e.where().file, "probe.stp");
       EXPECT_NE(std::string(e.what()).find("PROBING1"), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find(no_travel ? "no travel" : "no feed rate"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("no travel"), std::string::npos) << e.what();
     }
   }
 }

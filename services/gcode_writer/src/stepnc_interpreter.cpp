@@ -298,7 +298,7 @@ class Interpreter {
 
   // A WORKPIECE_PROBING (docs/cc1.md): the probe moves from its start along its direction until
   // it touches, expected within expected_value of the start; as G38.2 to the end of the range
-  // (theoretical size + upper limit), at the feed in effect.
+  // (theoretical size + upper limit), at the feed in effect (100 mm/min when there is none yet).
   void element(const sn::WorkpieceProbing& w, std::size_t) {
     name("workpiece probing", w.its_id);
     const double reach = w.expected_value.theoretical_size + w.expected_value.upper_limit;
@@ -307,9 +307,13 @@ class Interpreter {
     if (!(reach > 0) || !(reach < 1e6) || !(length > 1e-9) || !std::isfinite(length)) {
       fail("a workpiece probing with no travel (expected_value and its_direction)");
     }
-    if (state_.feed_mm <= 0) fail("a workpiece probing with no feed rate before it");
     const sn::CartesianPoint& s = w.start_position.location;
     go_to(pose(Frame{}.point(s)), w.its_secplane.position.location.z, true);
+    if (state_.feed_mm <= 0) {
+      // ISO 14649 gives a probing no feed: a probing before the first cut has none
+      emit(Comment{"ncbridge: the probing has no feed rate: 100 mm/min"});
+      emit(SetFeedRate{100});
+    }
     const sn::CartesianPoint end{s.x + d.x / length * reach, s.y + d.y / length * reach, s.z + d.z / length * reach};
     const Pose trip = pose(Frame{}.point(end));
     emit(TurnProbeOn{});
