@@ -54,7 +54,7 @@ endif()
 # ---- libraries, headers and the package config
 # The stages' libraries as ncbridge::<name>; their include directories are the source tree's in
 # the build and include/ once installed.
-set(_ncbridge_libraries common stepnc_model interpreter cc1_builder feature_recognizer step_writer part_reader)
+set(_ncbridge_libraries common stepnc_model interpreter cc1_builder feature_recognizer step_writer part_reader gcode_writer)
 set(_ncbridge_exported ncbridge_warnings)
 foreach(name IN LISTS _ncbridge_libraries)
   set(target ncbridge_${name})

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The gcode_writer on the generated benchmark program (bench/interpreter/generate_ngc_program):
-# CPU time (user + sys) of `ncbridge gcode --to fanuc` against `ncbridge canon` of the same file
+# CPU time (user + sys) of `ncbridge gcode --to D` (each of the five dialects) against `ncbridge canon` of the same file
 # (target: at most 1.5x), and peak RSS of gcode at 100k and at 1M lines (flat in program length).
 # Best of RUNS; output to a file / to /dev/null. Figures go to docs/performance.md ("gcode").
 #
@@ -39,12 +39,16 @@ for lines in 100000 1000000; do
   "$generator" "$lines" 1 >"$program"
   best_of "$ncbridge" canon "$program" --tool-table "$tools" --tool-table-units mm
   canon_cpu="$best_cpu" canon_rss="$best_rss_kb"
-  # the program has G64 P0.01, which Fanuc's G64 does not carry: --drop-path-tolerance
-  best_of "$ncbridge" gcode "$program" --dialect rs274ngc --to fanuc --drop-path-tolerance \
-    --tool-table "$tools" --tool-table-units mm -o "$work/out.nc"
-  awk -v n="$lines" -v cc="$canon_cpu" -v cr="$canon_rss" -v gc="$best_cpu" -v gr="$best_rss_kb" \
-      -v bytes="$(stat -c %s "$work/out.nc")" 'BEGIN {
-    if (cc <= 0) cc = 0.01;
-    printf "%8d lines: canon %6.2f s CPU, %6.1f MB peak | gcode --to fanuc %6.2f s CPU, %6.1f MB peak, %5.1f MB written | ratio %.2fx\n",
-           n, cc, cr / 1024, gc, gr / 1024, bytes / 1e6, gc / cc }'
+  # the program has G64 P0.01, which only RS274/NGC's G64 P and SINUMERIK's CYCLE832 carry:
+  # --drop-path-tolerance for the others (and for all, so that every dialect writes the same)
+  for dialect in fanuc rs274ngc mach3 siemens840d heidenhain; do
+    best_of "$ncbridge" gcode "$program" --dialect rs274ngc --to "$dialect" --drop-path-tolerance \
+      --tool-table "$tools" --tool-table-units mm -o "$work/out.$dialect"
+    awk -v n="$lines" -v d="$dialect" -v cc="$canon_cpu" -v cr="$canon_rss" -v gc="$best_cpu" -v gr="$best_rss_kb" \
+        -v bytes="$(stat -c %s "$work/out.$dialect")" 'BEGIN {
+      if (cc <= 0) cc = 0.01;
+      printf "%8d lines: canon %6.2f s CPU, %6.1f MB peak | gcode --to %-11s %6.2f s CPU, %6.1f MB peak, %5.1f MB written | ratio %.2fx\n",
+             n, cc, cr / 1024, d, gc, gr / 1024, bytes / 1e6, gc / cc }'
+    rm -f "$work/out.$dialect"
+  done
 done

@@ -1,12 +1,13 @@
 // `ncbridge gcode INPUT --to DIALECT -o OUT`: a program (any dialect the interpreter reads) or a
 // CC1 STEP-NC file written as a program in one of the five dialects (docs/gcode.md). Embedded
-// pipeline: interpreter (or the STEP-NC interpreter) -> gcode_writer, streamed into an atomic
-// output file: a failed run leaves no file (and an old OUT untouched).
+// pipeline: interpreter (or the STEP-NC interpreter) -> gcode_writer, streamed into the run's
+// output (output_files.hpp): every path checked before any work starts, and a failed run leaves
+// no file (an old OUT as it was). INPUT "-" reads standard input, "-o -" writes standard output.
 #include <CLI/CLI.hpp>
 
 #include <cctype>
+#include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -14,14 +15,17 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "errors.hpp"
+#include "feedback.hpp"
+#include "input_files.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/gcode_writer/program_writer.hpp"
 #include "ncbridge/gcode_writer/stepnc_interpreter.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/setup/tool_list.hpp"
-#include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
+#include "output_files.hpp"
 
 namespace ncbridge::cli {
 
@@ -37,6 +41,8 @@ struct GcodeArguments {
   std::string tools;
   std::string subroutine_path;
   std::string heidenhain_feed_units = "mm/min";
+  bool strict = false;
+  std::vector<int> machine_functions;
   std::string comments = "program";
   std::optional<int> decimals;
   std::optional<bool> block_numbers;
@@ -57,11 +63,8 @@ std::vector<std::filesystem::path> split_path(const std::string& text) {
 }
 
 // A Part 21 file opens with ISO-10303-21; after any white space and /* comments */.
-bool is_part21(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(8192, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
+bool is_part21(const Input& input) {
+  const std::string head = input_head(input, 8192);
   std::size_t i = 0;
   while (i < head.size()) {
     if (std::isspace(static_cast<unsigned char>(head[i]))) {
@@ -78,10 +81,10 @@ bool is_part21(const std::string& path) {
 }
 
 // The program name the dialects print (O-number comment, BEGIN PGM, MPF name): the output's
-// stem in capitals, letters, digits and _ only.
-std::string name_from(const std::string& output) {
+// stem (the input's when writing to a stream) in capitals, letters, digits and _ only.
+std::string name_from(const std::string& file_name) {
   std::string name;
-  for (char c : std::filesystem::path(output).stem().string()) {
+  for (char c : std::filesystem::path(file_name).stem().string()) {
     const auto u = static_cast<unsigned char>(c);
     name.push_back(std::isalnum(u) ? static_cast<char>(std::toupper(u)) : '_');
   }
@@ -97,11 +100,43 @@ setup::ToolList read_tools(const GcodeArguments& args) {
   return {};
 }
 
-int run_gcode(const GcodeArguments& args) {
+// Counts the calls for the progress line and the summary, on their way to the writer.
+class CountingSink final : public canonical::Sink {
+ public:
+  CountingSink(canonical::Sink& next, Progress& progress) : next_(next), progress_(progress) {}
+  void source_file(std::uint32_t index, std::string_view path) override { next_.source_file(index, path); }
+  void call(const canonical::Call& call) override {
+    ++calls_;
+    progress_.tick([this] { return "writing: " + std::to_string(calls_) + " canonical calls"; });
+    next_.call(call);
+  }
+  void end() override { next_.end(); }
+  std::uint64_t calls() const { return calls_; }
+
+ private:
+  canonical::Sink& next_;
+  Progress& progress_;
+  std::uint64_t calls_ = 0;
+};
+
+int run_gcode(const GcodeArguments& args, const Feedback& feedback) {
+  if (!args.tool_table.empty() && !args.tools.empty()) throw UsageError("--tool-table and --tools: give one tool list");
+  if (!args.tool_table.empty()) require_input_file(args.tool_table, "--tool-table");
+  if (!args.tools.empty()) require_input_file(args.tools, "--tools");
+  OutputSet outputs;
+  OutputFile& out = outputs.add(args.output, "-o");
+  for (const std::string* input : {&args.input, &args.tools, &args.tool_table}) outputs.protect(*input);
+  const Input input = open_input(args.input, "program");
+
   gcode_writer::Options options;
   options.dialect = *gcode_writer::parse_dialect(args.to);
   options.tools = read_tools(args);
-  options.program_name = args.program_name.empty() ? name_from(args.output) : args.program_name;
+  if (!args.program_name.empty()) {
+    options.program_name = args.program_name;
+  } else {
+    const std::string file = out.file_name();
+    options.program_name = name_from(!file.empty() ? file : input.from_stdin() ? std::string() : input.path.string());
+  }
   if (args.program_number) options.program_number = *args.program_number;
   options.decimals = args.decimals;
   options.block_numbers = args.block_numbers;
@@ -110,41 +145,69 @@ int run_gcode(const GcodeArguments& args) {
                      : args.comments == "source" ? gcode_writer::Comments::Source
                                                  : gcode_writer::Comments::Program;
 
-  if (is_part21(args.input)) {
+  std::uint64_t lines = 0;
+  auto write = [&](std::string_view piece) {
+    for (char c : piece) lines += c == '\n';
+    out.write(piece);
+  };
+  Progress progress(feedback.progress_wanted());
+  std::uint64_t calls = 0;
+  std::string what;
+  if (is_part21(input)) {
     // a CC1 file: the STEP-NC interpreter's calls; the program runs with the file's tools
     // unless a tool list is given
-    const auto read = step_writer::read_stepnc_file(args.input);
-    for (const auto& w : read.warnings) std::fprintf(stderr, "%s\n", w.to_string().c_str());
+    progress.set("reading " + input.name);
+    const auto read = input.text ? step_writer::read_stepnc(*input.text, input.name) : step_writer::read_stepnc_file(input.path);
+    progress.stop();
+    for (const auto& w : read.warnings) print_warning(w.where, w.message);
     if (options.tools.empty()) options.tools = gcode_writer::stepnc_tools(read.project);
     gcode_writer::StepncOptions stepnc;
     if (options.comments == gcode_writer::Comments::Source) {
       stepnc.name_workingsteps = true;  // a workingstep's name says where its blocks come from
       options.comments = gcode_writer::Comments::Program;
     }
-    step_writer::AtomicFile file(args.output);
-    gcode_writer::ProgramWriter writer(options, [&](std::string_view piece) { file.write(piece); });
-    gcode_writer::interpret_stepnc(read.project, args.input, stepnc, writer);
-    file.commit();
-    return 0;
+    gcode_writer::ProgramWriter writer(options, write);
+    CountingSink sink(writer, progress);
+    gcode_writer::interpret_stepnc(read.project, input.name, stepnc, sink);
+    calls = sink.calls();
+    what = "CC1 file";
+  } else {
+    interpreter::Options reading;
+    reading.tools = options.tools;
+    reading.subroutine_path = split_path(args.subroutine_path);
+    interpreter::parse_dialect_name(args.dialect, reading.dialect);
+    if (args.heidenhain_feed_units == "mm/s") reading.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
+    reading.strict = args.strict;
+    reading.machine_functions = args.machine_functions;
+    reading.warning = [&progress](const SourceLocation& where, const std::string& message) {
+      progress.stop();
+      print_warning(where, message);
+    };
+    if (reading.dialect == interpreter::Dialect::Auto) {
+      // the dialect whose reading takes the whole program (errors are located InputErrors)
+      const auto detected = input.text ? interpreter::detect_dialect_reading(*input.text, input.name, reading)
+                                       : interpreter::detect_dialect_reading(input.path, reading);
+      reading.dialect = detected.dialect;
+      feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " +
+                    detected.reason + ")");
+    }
+    gcode_writer::ProgramWriter writer(options, write);
+    CountingSink sink(writer, progress);
+    if (input.text) {
+      interpreter::interpret_text(*input.text, input.name, reading, sink);
+    } else {
+      interpreter::interpret_file(input.path, reading, sink);
+    }
+    calls = sink.calls();
+    what = std::string(interpreter::dialect_name(reading.dialect)) + " program";
   }
-
-  interpreter::Options reading;
-  reading.tools = options.tools;
-  reading.subroutine_path = split_path(args.subroutine_path);
-  interpreter::parse_dialect_name(args.dialect, reading.dialect);
-  if (reading.dialect == interpreter::Dialect::Auto) {
-    const auto detected = interpreter::detect_dialect_file(args.input);
-    reading.dialect = detected.dialect;
-    std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
-                 std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
-  }
-  if (args.heidenhain_feed_units == "mm/s") reading.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
-
-  step_writer::AtomicFile file(args.output);
-  gcode_writer::ProgramWriter writer(options, [&](std::string_view piece) { file.write(piece); });
-  interpreter::interpret_file(args.input, reading, writer);
-  file.commit();
-  return 0;
+  progress.stop();
+  outputs.commit();
+  feedback.summary(out.display_name() + ": " + std::string(gcode_writer::dialect_name(options.dialect)) + ", " +
+                   std::to_string(lines) + " lines from a " + what + " (" + std::to_string(calls) +
+                   " canonical calls), " + std::to_string(static_cast<long long>(feedback.elapsed_s() * 1000 + 0.5)) +
+                   " ms");
+  return exit_status::ok;
 }
 
 }  // namespace
@@ -153,22 +216,26 @@ void add_gcode_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<GcodeArguments>();
   CLI::App* cmd = app.add_subcommand(
       "gcode", "Write a program (any dialect) or a CC1 STEP-NC file as a program in a controller's dialect");
-  cmd->add_option("input", args->input, "Part program, or a CC1 Part 21 file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("input", args->input, "Part program, or a CC1 Part 21 file; - reads standard input")->required();
   cmd->add_option("--to", args->to, "Dialect to write")
       ->required()
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain"}));
-  cmd->add_option("-o,--output", args->output, "Program file to write")->required();
+  cmd->add_option("-o,--output", args->output, "Program file to write; - writes standard output")->required();
   cmd->add_option("--dialect", args->dialect, "Dialect of the input program (auto: detect it and say which)")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));
-  cmd->add_option("--tool-table", args->tool_table, "LinuxCNC tool table (.tbl) the programs run with")
-      ->check(CLI::ExistingFile);
+  cmd->add_option("--tool-table", args->tool_table, "LinuxCNC tool table (.tbl) the programs run with");
   cmd->add_option("--tool-table-units", args->tool_table_units, "Units of the tool table values")
       ->check(CLI::IsMember({"mm", "inch"}));
-  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML) the programs run with")->check(CLI::ExistingFile);
+  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML) the programs run with");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for called programs, ':'-separated");
   cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units,
                   "Unit of the input's Heidenhain F words (mm/s for FreeCAD's Heidenhain post)")
       ->check(CLI::IsMember({"mm/min", "mm/s"}));
+  cmd->add_flag("--strict", args->strict,
+                "Refuse what is otherwise read with a warning (machine builder M codes, G43 without tool lengths)");
+  cmd->add_option("--machine-functions", args->machine_functions,
+                  "M codes that are the machine builder's machine functions (no motion), beyond the dialect's list")
+      ->delimiter(',');
   cmd->add_option("--comments", args->comments,
                   "none; program: the input's comments (default); source: also name each source line or workingstep")
       ->check(CLI::IsMember({"none", "program", "source"}));
@@ -181,9 +248,9 @@ void add_gcode_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--program-name", args->program_name, "Program name (default: the output file's name)");
   cmd->add_flag("--drop-path-tolerance", args->drop_path_tolerance,
                 "Write LinuxCNC's G64 P tolerance as the dialect's plain continuous mode (it has no tolerance)");
-  cmd->callback([args, numbers, &exit_code]() {
+  cmd->callback([args, cmd, numbers, &exit_code]() {
     if (numbers->count() > 0) args->block_numbers = args->block_numbers_flag;
-    exit_code = run_gcode(*args);
+    exit_code = run_gcode(*args, Feedback(verbosity_of(*cmd)));
   });
 }
 

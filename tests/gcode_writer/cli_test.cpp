@@ -59,7 +59,8 @@ TEST_F(GcodeCommand, ARefusalIsALocatedErrorAndWritesNothing) {
   std::ofstream(out) << "an older file\n";
   const fs::path program = kSource / "tests/interpreter/golden/programs/m60_pallet_change.ngc";
   const auto run = run_program({NCBRIDGE_EXECUTABLE, "gcode", program.string(), "--to", "fanuc", "-o", out.string()});
-  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("ncbridge: error: "), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("m60_pallet_change.ngc:4"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("fanuc cannot express a pallet change with a stop (M60)"), std::string::npos) << run.err;
   EXPECT_EQ(read(out), "an older file\n");
@@ -72,7 +73,7 @@ TEST_F(GcodeCommand, ABadProgramIsALocatedErrorAndWritesNothing) {
   const fs::path out = dir_ / "bad.h";
   const auto run = run_program({NCBRIDGE_EXECUTABLE, "gcode", program.string(), "--dialect", "rs274ngc", "--to",
                                 "mach3", "-o", out.string()});
-  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.err.find("bad.ngc:3"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(out));
 }
@@ -102,7 +103,7 @@ TEST_F(GcodeCommand, ABrokenCc1FileIsALocatedErrorAndWritesNothing) {
   std::ofstream(broken, std::ios::binary) << text;
   const fs::path out = dir_ / "broken.ngc";
   const auto run = run_program({NCBRIDGE_EXECUTABLE, "gcode", broken.string(), "--to", "rs274ngc", "-o", out.string()});
-  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.err.find("#99999"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(out));
 }
@@ -111,9 +112,31 @@ TEST_F(GcodeCommand, AnUnknownDialectIsRefused) {
   const fs::path out = dir_ / "x.nc";
   const auto run = run_program({NCBRIDGE_EXECUTABLE, "gcode", (kSource / "examples/plate/plate.ngc").string(), "--to",
                                 "okuma", "-o", out.string()});
-  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("okuma"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+// `-` reads the program from standard input and `-o -` writes the program to standard output
+// (the house rules of docs/cli.md); an output that is the input is refused before any work.
+TEST_F(GcodeCommand, ReadsStandardInputAndWritesStandardOutput) {
+  const fs::path plate = kSource / "examples/plate";
+  ncbridge::testing::RunOptions options;
+  options.standard_input = plate / "plate.ngc";
+  const auto run = run_program({NCBRIDGE_EXECUTABLE, "gcode", "-", "--dialect", "rs274ngc", "--to", "heidenhain",
+                                "--tools", (plate / "tools.json").string(), "-o", "-"},
+                               options);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out.rfind("0 BEGIN PGM NCBRIDGE MM", 0), 0u) << run.out.substr(0, 200);
+  EXPECT_NE(run.out.find("END PGM NCBRIDGE MM"), std::string::npos);
+  EXPECT_NE(run.err.find("ncbridge: standard output: heidenhain, "), std::string::npos) << run.err;
+
+  const fs::path program = dir_ / "plate.ngc";
+  fs::copy_file(plate / "plate.ngc", program);
+  const auto same = run_program({NCBRIDGE_EXECUTABLE, "gcode", program.string(), "--to", "fanuc", "--tools",
+                                 (plate / "tools.json").string(), "-o", program.string()});
+  EXPECT_EQ(same.exit_code, 2) << same.err;
+  EXPECT_EQ(read(program), read(plate / "plate.ngc"));
 }
 
 }  // namespace

@@ -33,6 +33,10 @@ std::string_view program_extension(Dialect dialect) {
   return ".ngc";
 }
 
+void DialectWriter::probe_and_return(const canonical::StraightProbe&, const canonical::Pose&, const MachineState&) {
+  refuse("a probe move with the return to its start");
+}
+
 void DialectWriter::refuse(const std::string& construct, const std::string& why) const {
   std::string message = std::string(dialect_name(options_.dialect)) + " cannot express " + construct;
   if (!why.empty()) message += ": " + why;

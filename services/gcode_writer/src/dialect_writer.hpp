@@ -69,6 +69,12 @@ class DialectWriter {
   virtual void tool_change(int tool) = 0;
   // Any other action call: stops, spindle orientation, tool table entries, probes, ...
   virtual void action(const canonical::Call& call, const MachineState& desired) = 0;
+  // True: the dialect's probe move returns to where it started (Heidenhain's TCH PROBE 0), so
+  // a probe move is written only together with the rapid back to its start that follows it:
+  // the caller holds the probe until then and calls probe_and_return (`desired` as at the probe).
+  virtual bool probe_returns() const { return false; }
+  virtual void probe_and_return(const canonical::StraightProbe& probe, const canonical::Pose& start,
+                                const MachineState& desired);
   // The hole as the dialect's cycle, when that makes the same motion from here (`desired`
   // is the state the hole starts in); false: the caller writes its calls as moves.
   virtual bool cycle(const Hole& hole, const MachineState& desired) = 0;

@@ -54,15 +54,44 @@ std::string_view FanucWriter::plane_word(Plane plane) const {
   return WordAddressWriter::plane_word(plane);
 }
 
+// Coordinate system 9 (G59.3) is Fanuc's additional work offset G54.1 P1, its values set by
+// G10 L20 P1: the front-end reads G54.1 Pn as coordinate system 9 (Mach3 has neither).
 std::string FanucWriter::coord_system_word(int index) const {
+  if (index == 9 && !mach3_) return "G54.1 P1";
   return index >= 1 && index <= 6 ? WordAddressWriter::coord_system_word(index) : std::string();
 }
 
 void FanucWriter::sync_offsets(const MachineState& d) {
   for (int index = 7; index <= 9; ++index) {
     const auto i = static_cast<std::size_t>(index);
-    if (!near(reader_.g5x_mm[i], d.g5x_mm[i], 1e-9) || !near(reader_.rotation[i], d.rotation[i], 1e-9)) {
+    if (!near(reader_.rotation[i], d.rotation[i], 1e-9)) {
+      cannot("SET_XY_ROTATION (a rotated coordinate system)", "use G68 in the program, not G10 L2 R");
+    }
+    if (near(reader_.g5x_mm[i], d.g5x_mm[i], 1e-9)) continue;
+    if (index != 9 || mach3_) {
       cannot("coordinate system " + std::to_string(index) + " (G59." + std::to_string(index - 6) + ")");
+    }
+    if (!near(d.g5x_mm[i].a, 0, 1e-9) || !near(d.g5x_mm[i].b, 0, 1e-9) || !near(d.g5x_mm[i].c, 0, 1e-9)) {
+      cannot("a rotary axis value of the additional work offset (G54.1 P1)", "G10 L20 sets X, Y and Z here");
+    }
+    const double k = reader_.mm_per_unit();
+    flush();
+    std::string& s = put(Slot::NonModal);
+    s += "G10 L20 P1";
+    Pose written = reader_.g5x_mm[i];
+    for (auto [letter, field] : {std::pair{'X', &Pose::x}, std::pair{'Y', &Pose::y}, std::pair{'Z', &Pose::z}}) {
+      const double v = length(d.g5x_mm[i].*field / k);
+      s.push_back(' ');
+      append(s, letter, v);
+      written.*field = v * k;
+    }
+    flush();
+    reader_.g5x_mm[i] = written;
+    // the front-end takes the values when G54.1 P1 selects them: select it again when it is in effect
+    if (reader_.coord_system == 9) {
+      put(Slot::CoordSystem) += "G54.1 P1";
+      flush();
+      reader_.apply(SetG5xOffset{9, from_mm(written, k)});
     }
   }
   for (int index = 1; index <= 6; ++index) {
@@ -127,6 +156,34 @@ void FanucWriter::write_other_action(const Call& call, const MachineState& desir
     cannot("spindle-synchronised motion (G33, G33.1)");
   }
   WordAddressWriter::write_other_action(call, desired);
+}
+
+// G31: Fanuc's skip function, Mach3's probe move: a straight move of X, Y, Z that stops where the
+// signal comes, without an alarm when it does not (the front-end reads LinuxCNC's G38.3).
+// One-shot for the control; the writer names the next move's G0/G1 anyway.
+void FanucWriter::write_probe(const StraightProbe& probe) {
+  if (incremental_) cannot("a probe move inside a repeated body");
+  if (probe.probe_type == 0) {
+    cannot("a probe move that stops with an error when the probe does not trip (G38.2)",
+           "its G31 move goes on without one (G38.3)");
+  }
+  if (probe.probe_type != 1) {
+    cannot("a probe move away from the workpiece until contact is lost (G38.4, G38.5)",
+           "its G31 move stops when the signal comes");
+  }
+  const Pose end = rounded_pose(probe.end);
+  if (end.a != reader_.position.a || end.b != reader_.position.b || end.c != reader_.position.c) {
+    cannot("a probe move of the A, B or C axis", "G31 moves X, Y and Z");
+  }
+  std::string& s = put(Slot::Motion);
+  s += "G31";
+  axis_words(s, end, true);
+  reader_.apply(StraightProbe{end, 1});
+  note_other_motion(cycle_, 383);
+}
+
+void FanucWriter::write_log(const Data&) {
+  cannot("LinuxCNC's log and print comments ((LOG,...), (PRINT,...))", "the control writes no log file");
 }
 
 bool FanucWriter::has_cycle(int motion) const {

@@ -39,6 +39,9 @@ class FanucWriter : public WordAddressWriter {
   void append_cycle_dwell(std::string& s, double seconds) override;
   void write_repeat_begin(std::uint32_t count) override;
   void write_repeat_end() override;
+  void write_probe(const canonical::StraightProbe& probe) override;
+  bool has_nurbs() const override { return false; }
+  void write_log(const canonical::Data& d) override;
 
   bool mach3_;
   std::string subprograms_;         // the repeat construct's bodies, written after the main program

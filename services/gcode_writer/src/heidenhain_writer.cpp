@@ -69,6 +69,8 @@ class HeidenhainWriter final : public DialectWriter {
     pending_tool_ = tool;
   }
   void action(const Call& call, const MachineState& desired) override;
+  bool probe_returns() const override { return true; }
+  void probe_and_return(const StraightProbe& probe, const Pose& start, const MachineState& desired) override;
   bool cycle(const Hole& hole, const MachineState& desired) override;
   void comment(std::string_view text) override {
     if (pending_tool_) {  // after the TOOL CALL, which waits for the next action
@@ -476,7 +478,70 @@ void HeidenhainWriter::action(const Call& call, const MachineState&) {
   if (std::holds_alternative<StraightFeed>(d) || std::holds_alternative<RigidTap>(d)) {
     cannot("spindle-synchronised motion (G33, G33.1)");
   }
+  if (std::holds_alternative<NurbsFeed>(d)) cannot("a NURBS curve (G5, G5.1, G5.2 splines)", "its front-end reads no splines");
+  if (std::holds_alternative<LogOpen>(d) || std::holds_alternative<LogAppend>(d) || std::holds_alternative<LogClose>(d) ||
+      std::holds_alternative<Log>(d) || std::holds_alternative<Print>(d)) {
+    cannot("LinuxCNC's log and print comments ((LOG,...), (PRINT,...))", "the control writes no log file");
+  }
   cannot(std::string(name_of(d)));
+}
+
+// TCH PROBE 0 REFERENCE PLANE: from the pre-position (where the tool is) along one axis over
+// the probe's measuring range at its probing feed, the result in a Q parameter, back to the
+// pre-position; the front-end reads it as a G0 to the pre-position, a G38.3 at that feed, a G0
+// back and the program's F again. The machine's range and feed are the front-end's defaults
+// (MP6130 20 mm, MP6120 100 mm/min); the result parameter Q1999 is not read again (the written
+// program holds the numbers the source computed from it).
+void HeidenhainWriter::probe_and_return(const StraightProbe& probe, const Pose& start, const MachineState& desired) {
+  constexpr double kRangeMm = 20, kFeedMm = 100;
+  const std::string why =
+      "its touch probe cycle TCH PROBE 0 probes along one axis from where the tool is over the measuring range "
+      "(20 mm, MP6130) at the probing feed (100 mm/min, MP6120), without an error when nothing is touched, and "
+      "returns";
+  if (incremental_) cannot("a probe move inside a repeated body");
+  if (probe.probe_type != 1) {
+    cannot("a probe move that stops with an error without contact or probes away from the workpiece (G38.2, "
+           "G38.4, G38.5)",
+           why);
+  }
+  const double k = reader_.mm_per_unit();
+  const double tolerance = inch_ ? 1e-5 : 1e-4;
+  const double delta[3] = {probe.end.x - start.x, probe.end.y - start.y, probe.end.z - start.z};
+  int axis = -1;
+  for (int i = 0; i < 3; ++i) {
+    if (std::fabs(delta[i]) <= tolerance) continue;
+    if (axis >= 0) cannot("a probe move along more than one axis", why);
+    axis = i;
+  }
+  if (axis < 0 || std::fabs(std::fabs(delta[axis]) * k - kRangeMm) > 1e-3 || std::fabs(probe.end.a - start.a) > 1e-9 ||
+      std::fabs(probe.end.b - start.b) > 1e-9 || std::fabs(probe.end.c - start.c) > 1e-9) {
+    cannot("a probe move over another distance than the probe's measuring range", why);
+  }
+  if (desired.feed_mode != 0 || std::fabs(desired.feed_mm - kFeedMm) > 1e-6) {
+    cannot("a probe move at another feed than the probing feed", why);
+  }
+  flush_tool_call();
+  flush_before();
+  flush_path();
+  const char letter = "XYZ"[axis];
+  const bool plus = delta[axis] > 0;
+  block(concat({"TCH PROBE 0.0 REF. PLANE Q1999 ", std::string(1, letter), plus ? "+" : "-"}));
+  Pose pre = reader_.position;
+  pre.x = length(start.x);
+  pre.y = length(start.y);
+  pre.z = length(start.z);
+  std::string s = "TCH PROBE 0.1";
+  coordinate(s, "X", pre.x, length_decimals());
+  coordinate(s, "Y", pre.y, length_decimals());
+  coordinate(s, "Z", pre.z, length_decimals());
+  block(s);
+  reader_.apply(StraightTraverse{pre});
+  reader_.apply(SetFeedRate{kFeedMm / k});
+  Pose end = pre;
+  (axis == 0 ? end.x : axis == 1 ? end.y : end.z) += (plus ? kRangeMm : -kRangeMm) / k;
+  reader_.apply(StraightProbe{end, 1});
+  reader_.apply(StraightTraverse{pre});
+  if (programmed_feed_ > 0) reader_.apply(SetFeedRate{programmed_feed_});
 }
 
 // Cycles 200 (G81, G82, G83), 203 (G73), 201 (G85, G89), 207 (G84, G74 with a negative pitch),

@@ -44,6 +44,22 @@ bool near(const Pose& a, const Pose& b, double tolerance) {
   return true;
 }
 
+Pose after_probe(const Pose& start, const Pose& end, Units units) {
+  // rs274's simulated probe (the interpreter's probing.cpp): it trips at the end point and
+  // backs off towards the start, 0.254 mm or 0.01 inch; U V W read back as 0
+  Pose after = end;
+  const double dx = start.x - end.x, dy = start.y - end.y, dz = start.z - end.z;
+  const double distance = std::sqrt(dx * dx + dy * dy + dz * dz);
+  if (distance != 0) {
+    const double backoff = units == Units::Millimeters ? 0.254 : 0.01;
+    after.x = end.x + backoff * dx / distance;
+    after.y = end.y + backoff * dy / distance;
+    after.z = end.z + backoff * dz / distance;
+  }
+  after.u = after.v = after.w = 0;
+  return after;
+}
+
 Pose MachineState::origin_mm() const {
   Pose o = g5x_mm[static_cast<std::size_t>(coord_system)];
   for (auto f : kLinear) o.*f += g92_mm.*f;
@@ -90,9 +106,15 @@ void MachineState::apply(const Data& data) {
           rotation[static_cast<std::size_t>(coord_system)] = d.degrees;
         } else if constexpr (std::is_same_v<T, SelectPlane>) {
           plane = d.plane;
-        } else if constexpr (std::is_same_v<T, StraightTraverse> || std::is_same_v<T, StraightFeed> ||
-                             std::is_same_v<T, StraightProbe>) {
+        } else if constexpr (std::is_same_v<T, StraightTraverse> || std::is_same_v<T, StraightFeed>) {
           position = d.end;
+        } else if constexpr (std::is_same_v<T, StraightProbe>) {
+          position = after_probe(position, d.end, units);
+        } else if constexpr (std::is_same_v<T, NurbsFeed>) {
+          if (!d.control_points.empty()) {
+            position.x = d.control_points.back().x;
+            position.y = d.control_points.back().y;
+          }
         } else if constexpr (std::is_same_v<T, ArcFeed>) {
           position = arc_end(position, d, plane);
         } else if constexpr (std::is_same_v<T, SetFeedRate>) {

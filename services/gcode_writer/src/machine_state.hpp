@@ -51,6 +51,9 @@ struct MachineState {
 
 // The end point of an arc as a pose, for the plane it is in.
 canonical::Pose arc_end(const canonical::Pose& start, const canonical::ArcFeed& arc, canonical::Plane plane);
+// Where the reader is after a probe move from `start` to `end` (a program run without a machine:
+// LinuxCNC's rs274 takes the probe to trip at the end point and backs off towards the start).
+canonical::Pose after_probe(const canonical::Pose& start, const canonical::Pose& end, canonical::Units units);
 // Pose values of a call in the current units converted to mm (linear axes; a, b, c unchanged).
 canonical::Pose to_mm(const canonical::Pose& pose, double mm_per_unit);
 canonical::Pose from_mm(const canonical::Pose& pose, double mm_per_unit);

@@ -75,6 +75,17 @@ struct ProgramWriter::Impl {
   bool ended = false;      // PROGRAM_END written
   bool finished = false;   // end() called
   bool pallet_pending = false;
+  // TURN_PROBE_ON, STRAIGHT_PROBE, TURN_PROBE_OFF: the frame every dialect's probe move makes
+  // itself. 0: outside, 1: after TURN_PROBE_ON, 2: after the probe move
+  int probe_frame = 0;
+  // A probe move held until the rapid back to its start (DialectWriter::probe_returns)
+  struct HeldProbe {
+    StraightProbe probe;
+    Source source;
+    Pose start;
+    MachineState desired;
+  };
+  std::optional<HeldProbe> held_probe;
   std::optional<Hole> hole;
   std::uint32_t announced_file = ~0u, announced_line = 0;
   bool in_repeat = false;
@@ -211,7 +222,28 @@ struct ProgramWriter::Impl {
       return;  // the reader's own start-up; the first call of M6 (CHANGE_TOOL writes M6)
     } else if constexpr (std::is_same_v<T, Finish>) {
       return;  // the closing % of a tape: end() ends the program
+    } else if constexpr (std::is_same_v<T, TurnProbeOn>) {
+      if (probe_frame != 0) refuse("TURN_PROBE_ON while the probe is on");
+      probe_frame = 1;
+      return;
+    } else if constexpr (std::is_same_v<T, TurnProbeOff>) {
+      if (probe_frame != 2) refuse("TURN_PROBE_OFF without a probe move since TURN_PROBE_ON");
+      probe_frame = 0;
+      return;
     } else {
+      if constexpr (std::is_same_v<T, StraightProbe>) {
+        if (probe_frame != 1) {
+          refuse("STRAIGHT_PROBE without TURN_PROBE_ON before it (every dialect's probe move turns the probe on "
+                 "and off itself)");
+        }
+      } else if (probe_frame != 0) {
+        refuse(std::string(name_of(data)) + " while the probe is on (between TURN_PROBE_ON and TURN_PROBE_OFF)");
+      }
+      if (held_probe) {
+        write_held_probe(data);  // the rapid back: written with it
+        locate(source);
+        return;
+      }
       if (ended) refuse(std::string(name_of(data)) + " after the program end (M2/M30)");
       if (in_repeat && !std::is_same_v<T, StraightTraverse> && !std::is_same_v<T, StraightFeed> &&
           !std::is_same_v<T, ArcFeed>) {
@@ -272,8 +304,19 @@ struct ProgramWriter::Impl {
       } else if constexpr (std::is_same_v<T, OptionalProgramStop>) {
         sync(kActuators);
         dialect->action(Call{data, source, std::nullopt}, desired);
-      } else if constexpr (std::is_same_v<T, StraightProbe> || std::is_same_v<T, RigidTap>) {
+      } else if constexpr (std::is_same_v<T, StraightProbe>) {
+        if (dialect->probe_returns()) {
+          held_probe = HeldProbe{d, source, desired.position, desired};
+        } else {
+          sync(kFeedMotion);
+          dialect->action(Call{data, source, std::nullopt}, desired);
+        }
+        probe_frame = 2;
+      } else if constexpr (std::is_same_v<T, RigidTap>) {
         sync(kFeedMotion);
+        dialect->action(Call{data, source, std::nullopt}, desired);
+      } else if constexpr (std::is_same_v<T, NurbsFeed>) {
+        sync(kFeedMotion | kPlane);
         dialect->action(Call{data, source, std::nullopt}, desired);
       } else {
         sync(kUnits);
@@ -283,10 +326,31 @@ struct ProgramWriter::Impl {
     }
   }
 
+  // The action after a held probe move: the rapid back to its start is written with it as the
+  // dialect's probe cycle; anything else refuses the probe move, at its own source line.
+  void write_held_probe(const Data& next) {
+    HeldProbe held = std::move(*held_probe);
+    held_probe.reset();
+    const auto* back = std::get_if<StraightTraverse>(&next);
+    const double tolerance = held.desired.units == Units::Inches ? 1e-5 : 1e-4;
+    locate(held.source);
+    if (back == nullptr || !near(back->end, held.start, tolerance)) {
+      refuse(std::string(dialect_name(options.dialect)) +
+             " cannot express a probe move not followed by a rapid back to where it started: its probing cycle "
+             "returns to its pre-position");
+    }
+    announce(held.source);
+    sync(kUnits);
+    dialect->probe_and_return(held.probe, held.start, held.desired);
+    desired.apply(next);
+  }
+
   void end() {
     if (finished) return;
+    if (held_probe) write_held_probe(ProgramEnd{});
     flush_hole();
     if (in_repeat) refuse("the stream ended inside a repeated body (begin_repeat without end_repeat)");
+    if (probe_frame != 0) refuse("the stream ended with the probe on (TURN_PROBE_ON without TURN_PROBE_OFF)");
     if (pallet_pending) refuse_pallet();
     start();
     dialect->end_program(ended);

@@ -90,6 +90,25 @@ class Siemens840dWriter final : public WordAddressWriter {
   }
   void sync_control(const MachineState& desired) override {
     if (desired.control == MotionControlMode::ExactStop) cannot("exact stop mode (G61.1)");
+    // G64 P (LinuxCNC's path tolerance, its naive-CAM tolerance the same): CYCLE832 with the
+    // tolerance, the front-end reads it back as that G64 P
+    if (desired.control == MotionControlMode::Continuous && desired.tolerance > 0 &&
+        near(desired.naive_tolerance, desired.tolerance, 1e-9)) {
+      const double p = length(desired.tolerance);
+      if (reader_.control == MotionControlMode::Continuous && near(reader_.tolerance, p, 1e-9) &&
+          near(reader_.naive_tolerance, p, 1e-9)) {
+        return;
+      }
+      flush();
+      std::string& s = put(Slot::NonModal);
+      s += "CYCLE832(";
+      append_number(s, p, style_);
+      s += ",0,1)";
+      flush();
+      reader_.apply(SetMotionControlMode{MotionControlMode::Continuous, p});
+      reader_.apply(SetNaivecamTolerance{p});
+      return;
+    }
     sync_control_without_tolerance(desired);
   }
   // G60 (exact stop, modal) is the executor's exact path; G64 its continuous mode.
@@ -125,6 +144,29 @@ class Siemens840dWriter final : public WordAddressWriter {
       cannot("spindle-synchronised motion (G33, G33.1)");
     }
     WordAddressWriter::write_other_action(call, desired);
+  }
+  // MEAS=1 (MEAS=-1: the falling edge) with a straight G1 move: measuring with probe 1, read as
+  // LinuxCNC's G38.3 (G38.5). The writer names the next move's G0/G1 again.
+  void write_probe(const StraightProbe& probe) override {
+    if (incremental_) cannot("a probe move inside a repeated body");
+    if (probe.probe_type == 0) {
+      cannot("a probe move that stops with an error when the probe does not trip (G38.2)",
+             "MEAS= measures without one (G38.3)");
+    }
+    if (probe.probe_type == 2) {
+      cannot("a probe move away from the workpiece that stops with an error when contact is not lost (G38.4)",
+             "MEAS=-1 measures without one (G38.5)");
+    }
+    const Pose end = rounded_pose(probe.end);
+    std::string& s = put(Slot::Motion);
+    s += probe.probe_type == 1 ? "MEAS=1 G1" : "MEAS=-1 G1";
+    axis_words(s, end, true);
+    reader_.apply(StraightProbe{end, probe.probe_type});
+    note_other_motion(cycle_, 382 + probe.probe_type);
+  }
+  bool has_nurbs() const override { return false; }
+  void write_log(const Data&) override {
+    cannot("LinuxCNC's log and print comments ((LOG,...), (PRINT,...))", "the control writes no log file");
   }
   void write_repeat_begin(std::uint32_t count) override {
     ++repeat_label_;

@@ -185,11 +185,13 @@ class Interpreter {
   void traverse(const Pose& to) {
     emit(StraightTraverse{to});
     position_known_ = true;
+    probe_trip_.reset();
   }
   void feed(const Pose& to) {
     if (state_.feed_mm <= 0) fail("a feed move with no feed rate (MILLING_TECHNOLOGY.feedrate)");
     emit(StraightFeed{to});
     position_known_ = true;
+    probe_trip_.reset();
   }
 
   // To the start of a path: straight from an unknown position (after a tool change, as the
@@ -208,6 +210,8 @@ class Interpreter {
     }
     const Pose& here = state_.position;
     if (distance(here, start) <= kSamePoint) return;
+    // the model's path goes on from where the probe tripped; the tool is where it backed off to
+    if (probe_trip_ && distance(*probe_trip_, start) <= kSamePoint) return;
     if (options_.name_workingsteps) emit(Comment{"ncbridge: connecting move over the security plane"});
     const double high = std::max({security_z, here.z, start.z});
     Pose p = here;
@@ -294,19 +298,29 @@ class Interpreter {
 
   // A WORKPIECE_PROBING (docs/cc1.md): the probe moves from its start along its direction until
   // it touches, expected within expected_value of the start; as G38.2 to the end of the range
-  // (theoretical size + upper limit), at the feed in effect.
+  // (theoretical size + upper limit), at the feed in effect (100 mm/min when there is none yet).
   void element(const sn::WorkpieceProbing& w, std::size_t) {
     name("workpiece probing", w.its_id);
     const double reach = w.expected_value.theoretical_size + w.expected_value.upper_limit;
     const sn::Direction& d = w.its_direction;
     const double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-    if (!(reach > 0) || !(length > 0)) fail("a workpiece probing with no travel (expected_value and its_direction)");
-    if (state_.feed_mm <= 0) fail("a workpiece probing with no feed rate before it");
+    if (!(reach > 0) || !(reach < 1e6) || !(length > 1e-9) || !std::isfinite(length)) {
+      fail("a workpiece probing with no travel (expected_value and its_direction)");
+    }
     const sn::CartesianPoint& s = w.start_position.location;
     go_to(pose(Frame{}.point(s)), w.its_secplane.position.location.z, true);
+    if (state_.feed_mm <= 0) {
+      // ISO 14649 gives a probing no feed: a probing before the first cut has none
+      emit(Comment{"ncbridge: the probing has no feed rate: 100 mm/min"});
+      emit(SetFeedRate{100});
+    }
     const sn::CartesianPoint end{s.x + d.x / length * reach, s.y + d.y / length * reach, s.z + d.z / length * reach};
-    emit(StraightProbe{pose(Frame{}.point(end)), 0});
+    const Pose trip = pose(Frame{}.point(end));
+    emit(TurnProbeOn{});
+    emit(StraightProbe{trip, 0});
+    emit(TurnProbeOff{});
     position_known_ = true;  // as the CC1 builder reads a probe move: the path goes on from its end
+    probe_trip_ = trip;
   }
 
   // The tool, spindle and coolant of the cut an approach leads to are there before it (the
@@ -494,6 +508,7 @@ class Interpreter {
   MachineState state_;
   bool tool_loaded_ = false;
   bool position_known_ = false;
+  std::optional<Pose> probe_trip_;  // where the last probe move tripped, until the tool moves on
   Source source_{0, 0, -1, 0};
   std::optional<CycleTag> tag_;
   std::uint32_t cycle_id_ = 0;

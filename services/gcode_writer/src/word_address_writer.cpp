@@ -746,10 +746,122 @@ void WordAddressWriter::write_other_action(const Call& call, const MachineState&
     reader_.apply(RigidTap{end, r->scale});
     reader_.apply(StopSpeedFeedSynch{});
     note_other_motion(cycle_, 331);
+  } else if (const auto* probe = std::get_if<StraightProbe>(&d)) {
+    write_probe(*probe);
+  } else if (const auto* curve = std::get_if<NurbsFeed>(&d)) {
+    write_nurbs(*curve);
+  } else if (std::holds_alternative<LogOpen>(d) || std::holds_alternative<LogAppend>(d) ||
+             std::holds_alternative<LogClose>(d) || std::holds_alternative<Log>(d) || std::holds_alternative<Print>(d)) {
+    write_log(d);
   } else {
     cannot(std::string(name_of(d)));
   }
   flush();
+}
+
+// G38.2-G38.5: the probe moves until the probe trips (or, G38.4/G38.5, loses contact); the
+// reader then stands where its simulated probe backed off to (after_probe). G38.x is modal in
+// LinuxCNC: the next move names its G0/G1 again.
+void WordAddressWriter::write_probe(const StraightProbe& probe) {
+  if (incremental_) cannot("a probe move inside a repeated body");
+  std::string& s = put(Slot::Motion);
+  s += probe.probe_type == 0 ? "G38.2" : probe.probe_type == 1 ? "G38.3" : probe.probe_type == 2 ? "G38.4" : "G38.5";
+  const Pose end = rounded_pose(probe.end);
+  axis_words(s, end, true);
+  reader_.apply(StraightProbe{end, probe.probe_type});
+  note_other_motion(cycle_, 382 + probe.probe_type);
+}
+
+// A NURBS curve (made by G5, G5.1 or G5.2) as LinuxCNC's G5.2/G5.3: the first control point is
+// where the tool is (its weight alone on the first block when it is not 1), then one control
+// point X Y with its weight P a block, the order L on the first block when it is above 3, G5.3.
+// The reader then has no motion mode: the next move names its G0/G1 again.
+void WordAddressWriter::write_nurbs(const NurbsFeed& curve) {
+  if (!has_nurbs()) cannot("a NURBS curve (G5, G5.1, G5.2 splines)", "its front-end reads no splines");
+  if (incremental_) cannot("a NURBS curve inside a repeated body");
+  if (reader_.plane != Plane::XY) cannot("a NURBS curve outside the XY plane");
+  const auto& points = curve.control_points;
+  if (curve.order < 3 || points.size() < static_cast<std::size_t>(curve.order) || points.size() < 2) {
+    cannot("a NURBS curve of order " + std::to_string(curve.order) + " with " + std::to_string(points.size()) +
+           " control points", "G5.2 needs an order of 3 or more and at least as many control points");
+  }
+  const double tolerance = reader_.units == Units::Inches ? 1e-5 : 1e-4;
+  if (!near(points.front().x, reader_.position.x, tolerance) || !near(points.front().y, reader_.position.y, tolerance)) {
+    cannot("a NURBS curve that does not start where the tool is");
+  }
+  NumberStyle weight_style;
+  weight_style.decimals = 6;
+  weight_style.point_always = point_always_;
+  auto weight = [&](std::string& s, double w) {
+    if (!(w > 0) || !std::isfinite(w)) cannot("a NURBS control point of weight " + std::to_string(w));
+    s += " P";
+    append_number(s, w, weight_style);
+  };
+  NurbsFeed written;
+  written.order = curve.order;
+  written.control_points.push_back({reader_.position.x, reader_.position.y, 1.0});
+  std::size_t next = 1;
+  {
+    std::string& s = put(Slot::Motion);
+    s += "G5.2";
+    if (points.front().weight != 1.0) {
+      weight(s, points.front().weight);
+      written.control_points.front().weight = rounded(points.front().weight, 6);
+    } else {
+      const double x = length(points[1].x), y = length(points[1].y);
+      s.push_back(' ');
+      append(s, 'X', x);
+      s.push_back(' ');
+      append(s, 'Y', y);
+      weight(s, points[1].weight);
+      written.control_points.push_back({x, y, rounded(points[1].weight, 6)});
+      next = 2;
+    }
+    if (curve.order > 3) append_int(s, " L", curve.order);
+    flush();
+  }
+  for (; next < points.size(); ++next) {
+    std::string& s = put(Slot::Motion);
+    const double x = length(points[next].x), y = length(points[next].y);
+    append(s, 'X', x);
+    s.push_back(' ');
+    append(s, 'Y', y);
+    weight(s, points[next].weight);
+    written.control_points.push_back({x, y, rounded(points[next].weight, 6)});
+    flush();
+  }
+  put(Slot::NonModal) += "G5.3";
+  reader_.apply(written);
+  note_other_motion(cycle_, 53);
+}
+
+// LinuxCNC's log and print comments, each on a line of its own. Their texts are the ones the
+// reader printed: a # or % in them would be read as a parameter or a format again.
+void WordAddressWriter::write_log(const Data& d) {
+  auto check = [&](std::string_view what, std::string_view text, bool expanded) {
+    for (char c : text) {
+      if (c == '(' || c == ')' || c == '\n' || c == '\r' || (expanded && (c == '#' || c == '%'))) {
+        cannot(std::string(what) + " whose text holds '" + std::string(1, c == '\n' || c == '\r' ? ' ' : c) + "'",
+               "the comment that writes it would end there or be read differently");
+      }
+    }
+  };
+  flush();
+  if (const auto* o = std::get_if<LogOpen>(&d)) {
+    check("a LOGOPEN", o->path, false);
+    line(concat({"(LOGOPEN,", o->path, ")"}));
+  } else if (const auto* a = std::get_if<LogAppend>(&d)) {
+    check("a LOGAPPEND", a->path, false);
+    line(concat({"(LOGAPPEND,", a->path, ")"}));
+  } else if (std::holds_alternative<LogClose>(d)) {
+    line("(LOGCLOSE)");
+  } else if (const auto* l = std::get_if<Log>(&d)) {
+    check("a LOG", l->text, true);
+    line(concat({"(LOG,", l->text, ")"}));
+  } else if (const auto* p = std::get_if<Print>(&d)) {
+    check("a PRINT", p->text, true);
+    line(concat({"(PRINT,", p->text, ")"}));
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -127,6 +127,11 @@ class WordAddressWriter : public DialectWriter {
   // the cycle dwells anyway, the reader uses the P of an earlier cycle block of the same run.
   virtual bool reads_cycle_dwell(int motion) const;
   virtual void append_cycle_dwell(std::string& s, double seconds);
+  // Probe moves (RS274/NGC G38.2-G38.5), NURBS curves (G5.2/G5.3), log and print comments.
+  virtual void write_probe(const canonical::StraightProbe& probe);
+  virtual bool has_nurbs() const { return true; }
+  void write_nurbs(const canonical::NurbsFeed& curve);
+  virtual void write_log(const canonical::Data& d);
   virtual void write_repeat_begin(std::uint32_t count);
   virtual void write_repeat_end();
 

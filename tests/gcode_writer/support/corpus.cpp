@@ -67,6 +67,8 @@ std::vector<CorpusProgram> corpus_programs() {
   }
   for (const char* d : {"fanuc", "mach3", "siemens840d", "heidenhain"}) {
     for (const fs::path& f : sorted_files(dialects / d)) {
+      // Siemens subprograms (.SPF) run from the main programs that call them, not alone
+      if (f.extension() == ".SPF" || f.extension() == ".spf") continue;
       const interpreter::Dialect dialect =
           f.extension() == ".ngc" ? interpreter::Dialect::Rs274Ngc : dialect_of_extension(f);
       out.push_back({"dialects/" + std::string(d) + "/" + f.filename().string(), f, dialect, part_tools, "tools-json",

@@ -234,11 +234,12 @@ std::vector<Action> actions_of(std::string_view listing) {
       for (std::size_t i = 0; still && i < end.size(); ++i) still = std::fabs((*position)[i] - end[i]) < 5e-5;
       position = end;
       if (still) continue;
-    } else if (name == "ARC_FEED") {
-      position.reset();
+    } else if (name == "ARC_FEED" || name == "STRAIGHT_PROBE" || name == "NURBS_FEED") {
+      position.reset();  // (a probe ends where it backs off to: the next move starts there)
     }
     std::vector<std::string> keys;
-    const bool move = straight || name == "ARC_FEED" || name == "STRAIGHT_PROBE" || name == "RIGID_TAP";
+    const bool move = straight || name == "ARC_FEED" || name == "STRAIGHT_PROBE" || name == "RIGID_TAP" ||
+                      name == "NURBS_FEED";
     if (move) {
       keys = kFrame;
       keys.insert(keys.end(), kActuators.begin(), kActuators.end());
@@ -248,7 +249,7 @@ std::vector<Action> actions_of(std::string_view listing) {
       }
       keys.push_back("tool");
       if (name != "STRAIGHT_TRAVERSE") keys.insert(keys.end(), kFeed.begin(), kFeed.end());
-      if (name == "ARC_FEED") keys.push_back("plane");
+      if (name == "ARC_FEED" || name == "NURBS_FEED") keys.push_back("plane");
     } else if (name == "DWELL" || name == "PROGRAM_STOP" || name == "OPTIONAL_PROGRAM_STOP") {
       keys = kActuators;
     }
