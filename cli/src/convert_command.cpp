@@ -19,6 +19,7 @@
 
 #include "cc1_report.hpp"
 #include "cc2_output.hpp"
+#include "cc2_to_cc1.hpp"
 #include "commands.hpp"
 #include "html_report.hpp"
 #include "ncbridge/cc1_builder/cc1_builder.hpp"
@@ -304,6 +305,11 @@ int run_convert(const ConvertArguments& args) {
     auto read = step_writer::read_stepnc_file(args.program);
     for (const auto& d : read.warnings) warnings.push_back({d.where, d.message});
     project = std::move(read.project);
+    if (args.level == "cc1" && needs_toolpaths(project)) {  // CC2 in: generate the toolpaths
+      std::vector<std::string> notes;
+      project = generate_cc1(project, stock, args.program, notes);
+      for (auto& n : notes) warnings.push_back({{args.program, 0, 0}, std::move(n)});
+    }
     t_built = Clock::now();
   } else {
     const cc1_builder::Options options = builder_options(args, stock);
@@ -370,7 +376,7 @@ int run_convert(const ConvertArguments& args) {
 void add_convert_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ConvertArguments>();
   CLI::App* cmd = app.add_subcommand("convert", "Convert a part program into an ISO 14649 (STEP-NC) Part 21 file");
-  cmd->add_option("program", args->program, "Part program, or a CC1 Part 21 file to raise to --level cc2")->required()->check(CLI::ExistingFile);
+  cmd->add_option("program", args->program, "Part program, a CC1 Part 21 file to raise to --level cc2, or a CC2 file to give toolpaths (--level cc1)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md); needed for a program")->check(CLI::ExistingFile);
   cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML, docs/formats/stock.md); needed for a program")->check(CLI::ExistingFile);
   cmd->add_option("--dialect", args->dialect, "Program dialect")
