@@ -1,5 +1,6 @@
 // Region (Clipper, integer grid) against the exact union (CGAL, exact constructions) on real
-// swept areas, and the shortcuts of region.cpp (tiles of large regions, box tests, equal
+// swept areas (the recogniser's own swept_area, made of convex pieces united in a tree, against
+// the exact union of one stadium per segment), and the shortcuts of region.cpp (tiles of large regions, box tests, equal
 // regions) against the full operations they replace. Bound: each operation moves a vertex by
 // at most half a grid diagonal, so areas agree within perimeter * kGrid per operation.
 #include <gtest/gtest.h>
@@ -124,6 +125,65 @@ TEST(RegionCrossCheck, NestedLoopsWithRidgesMatchTheExactUnion) {
   EXPECT_TRUE(grid.contains({20, 0}) == false && grid.contains({0, 0}) == false && grid.contains({12, 0}));
 }
 
+namespace {
+
+// The same point set both ways: areas within the grid bound, the same components and holes, the
+// same containment away from the boundary.
+void expect_same_region(const fr::Region& grid, const fr::Region& exact) {
+  ASSERT_FALSE(exact.empty());
+  EXPECT_NEAR(grid.area(), exact.area(), bound(exact, 4));
+  EXPECT_LT(exact.minus(grid).area() + grid.minus(exact).area(), bound(exact, 6));
+  EXPECT_EQ(grid.components().size(), exact.components().size());
+  std::size_t holes_exact = 0, holes_grid = 0;
+  for (const auto& p : exact.polygons()) holes_exact += p.holes.size();
+  for (const auto& p : grid.polygons()) holes_grid += p.holes.size();
+  EXPECT_EQ(holes_grid, holes_exact);
+  EXPECT_EQ(containment_disagreements(grid, exact, *exact.bbox(), 1e-4), 0);
+}
+
+// Random long strokes across a plate, as the interpreter benchmark's program cuts (many
+// crossings at every angle), and trochoidal loops (each loop overlapping its neighbours many
+// times): the tree of convex pieces gives the exact union of the stadiums.
+std::vector<fr::Point2> random_strokes(unsigned seed, int count) {
+  std::vector<fr::Point2> path;
+  for (int i = 0; i < count; ++i) {
+    seed = seed * 1103515245u + 12345u;
+    const double x = static_cast<double>((seed >> 8) % 200000) / 1000.0;
+    seed = seed * 1103515245u + 12345u;
+    path.push_back({x, static_cast<double>((seed >> 8) % 150000) / 1000.0});
+  }
+  return path;
+}
+
+std::vector<fr::Point2> trochoid(double loop_radius, double advance_per_loop, int loops) {
+  std::vector<fr::Point2> path;
+  const int per_loop = 48;
+  for (int i = 0; i <= loops * per_loop; ++i) {
+    const double t = 2 * std::numbers::pi * i / per_loop;
+    path.push_back({advance_per_loop * i / per_loop + loop_radius * std::cos(t), loop_radius * std::sin(t)});
+  }
+  return path;
+}
+
+}  // namespace
+
+TEST(RegionCrossCheck, SweptAreasAreTheExactUnionOfTheirStadiums) {
+  const std::vector<std::vector<std::vector<fr::Point2>>> cases = {
+      {pocket_path({30, 20}, {40, 15})},
+      {{{-30, -30}, {30, -30}, {30, 30}, {-30, 30}, {-30, -30}}, {{-12, -12}, {12, -12}, {12, 12}, {-12, 12}, {-12, -12}}},
+      {{{0, 0}, {10, 0}, {10, 0.5}, {0, 0.5}}},  // a hairpin: reversals
+      {random_strokes(7, 14)},
+      {random_strokes(11, 8), random_strokes(13, 8)},
+      {trochoid(2.5, 0.8, 12)},
+      {zigzag(60, 30, 7)}};
+  for (const auto& paths : cases) {
+    std::vector<std::vector<fr::Point2>> simplified;
+    for (const auto& p : paths) simplified.push_back(fr::simplify_polyline(p, kTol));
+    const auto exact = fr::exact_union(stadiums(simplified, 3));
+    expect_same_region(fr::swept_area(paths, 3, kTol), exact);
+  }
+}
+
 TEST(RegionCrossCheck, OperationsKeepTheirIdentities) {
   const auto a = fr::exact_union(stadiums({pocket_path({30, 20}, {30, 20})}, 5));
   const auto b = fr::exact_union(stadiums({pocket_path({37.3, 24.1}, {37.3, 24.1})}, 4));
@@ -235,3 +295,4 @@ TEST(BoxIndex, CandidatesHoldEveryOverlappingBoxInOrder) {
   lines.insert(1, {10, 0, 20, 10});
   EXPECT_EQ(lines.candidates({10, 5, 10, 5}).size(), 2u);
 }
+

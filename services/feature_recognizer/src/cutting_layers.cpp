@@ -5,18 +5,23 @@
 #include <numbers>
 #include <string>
 
+#include "box_index.hpp"
 #include "ncbridge/common/error.hpp"
 
 namespace ncbridge::feature_recognizer {
 namespace {
+
+// sqrt(dx² + dy²): as exact as std::hypot for coordinates in millimetres, without its care for
+// overflow, which costs more than the rest of these loops.
+double planar_distance(double dx, double dy) { return std::sqrt(dx * dx + dy * dy); }
 
 constexpr double kLevelTolerance = 1e-3;  // mm: two z values closer than this are one level
 
 bool finite(const Point3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 void append_arc(const Point3& from, const Move& move, double tolerance, CuttingPass& pass) {
-  const double r0 = std::hypot(from.x - move.center_x, from.y - move.center_y);
-  const double r1 = std::hypot(move.end.x - move.center_x, move.end.y - move.center_y);
+  const double r0 = planar_distance(from.x - move.center_x, from.y - move.center_y);
+  const double r1 = planar_distance(move.end.x - move.center_x, move.end.y - move.center_y);
   const double a0 = std::atan2(from.y - move.center_y, from.x - move.center_x);
   const double a1 = std::atan2(move.end.y - move.center_y, move.end.x - move.center_x);
   const double two_pi = 2 * std::numbers::pi;
@@ -34,17 +39,26 @@ void append_arc(const Point3& from, const Move& move, double tolerance, CuttingP
                            from.z + (move.end.z - from.z) * t});
   }
   pass.points.back() = move.end;
-  pass.arcs.push_back({{move.center_x, move.center_y}, (r0 + r1) / 2, sweep, from.z, move.end.z});
   pass.xy_length += std::abs(sweep) * (r0 + r1) / 2;
 }
 
 // A pass ends at a rapid or a tool change; it runs on across workingsteps otherwise (an
-// upstream segmenter may split a plunge from the cut it starts, at a feed change).
-std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>& workingsteps, double tolerance) {
-  std::vector<CuttingPass> passes;
+// upstream segmenter may split a plunge from the cut it starts, at a feed change). Each pass is
+// handed on as it ends, so that only one is held at a time.
+template <typename OnPass>
+void cut_into_passes(const std::vector<ToolpathWorkingstep>& workingsteps, double tolerance, OnPass on_pass) {
   CuttingPass current;
+  std::size_t sequence = 0;
   auto flush = [&] {
-    if (current.points.size() >= 2) passes.push_back(std::move(current));
+    if (current.points.size() >= 2) {
+      current.sequence = sequence++;
+      current.z_min = current.z_max = current.points.front().z;
+      for (const auto& p : current.points) {
+        current.z_min = std::min(current.z_min, p.z);
+        current.z_max = std::max(current.z_max, p.z);
+      }
+      on_pass(std::move(current));
+    }
     current = CuttingPass{};
   };
   Point3 at;
@@ -56,7 +70,7 @@ std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>&
     at = ws.start;
     for (const auto& move : ws.moves) {
       if (!finite(move.end) || !std::isfinite(move.center_x) || !std::isfinite(move.center_y)) {
-        throw InputError({"", move.source_line, 0}, "workingstep " + std::to_string(w) +
+        throw InputError({"", move.source_line, 1}, "workingstep " + std::to_string(w) +
                                                         ": a move has a coordinate that is not a finite number");
       }
       if (move.kind == MoveKind::Rapid) {
@@ -67,28 +81,21 @@ std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>&
       if (current.points.empty()) {
         current.workingstep = w;
         current.points.push_back(at);
-        current.point_workingsteps.push_back(w);
+      }
+      if (current.workingstep_runs.empty() || current.workingstep_runs.back().second != w) {
+        // The points this move adds (and the pass's first point) belong to workingstep w.
+        current.workingstep_runs.emplace_back(current.workingstep_runs.empty() ? 0 : current.points.size(), w);
       }
       if (move.kind == MoveKind::Arc) {
         append_arc(at, move, tolerance, current);
       } else {
-        current.xy_length += std::hypot(move.end.x - at.x, move.end.y - at.y);
+        current.xy_length += planar_distance(move.end.x - at.x, move.end.y - at.y);
         current.points.push_back(move.end);
       }
-      current.point_workingsteps.resize(current.points.size(), w);
       at = move.end;
     }
   }
   flush();
-  for (std::size_t i = 0; i < passes.size(); ++i) passes[i].sequence = i;
-  for (auto& pass : passes) {
-    pass.z_min = pass.z_max = pass.points.front().z;
-    for (const auto& p : pass.points) {
-      pass.z_min = std::min(pass.z_min, p.z);
-      pass.z_max = std::max(pass.z_max, p.z);
-    }
-  }
-  return passes;
 }
 
 // A pass whose z goes up and down many times while x and y move is surface machining.
@@ -98,7 +105,7 @@ bool is_freeform(const CuttingPass& pass) {
   for (std::size_t i = 1; i < pass.points.size(); ++i) {
     const auto& a = pass.points[i - 1];
     const auto& b = pass.points[i];
-    const double xy = std::hypot(b.x - a.x, b.y - a.y), dz = b.z - a.z;
+    const double xy = planar_distance(b.x - a.x, b.y - a.y), dz = b.z - a.z;
     total += xy;
     if (xy > 1e-6 && std::abs(dz) > 1e-4) sloped += xy;
     if (std::abs(dz) > 1e-4) {
@@ -114,10 +121,7 @@ Layer make_layer(const CuttingPass& pass, const ToolpathWorkingstep& ws, std::ve
                  std::size_t first_point) {
   Layer layer;
   // The workingsteps of the points after the first (the first is where the cut starts from).
-  for (std::size_t i = first_point + 1; i < first_point + path.size() && i < pass.points.size(); ++i) {
-    const auto w = pass.point_workingsteps[i];
-    if (layer.workingsteps.empty() || layer.workingsteps.back() != w) layer.workingsteps.push_back(w);
-  }
+  layer.workingsteps = pass.workingsteps_of(first_point + 1, std::min(first_point + path.size(), pass.points.size()));
   if (layer.workingsteps.empty()) layer.workingsteps = {pass.workingstep};
   layer.sequence = pass.sequence;
   layer.tool = ws.tool;
@@ -135,19 +139,29 @@ Layer make_layer(const CuttingPass& pass, const ToolpathWorkingstep& ws, std::ve
 double xy_length(const Layer& layer) {
   double length = 0;
   for (const auto& path : layer.paths) {
-    for (std::size_t i = 1; i < path.size(); ++i) length += std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
+    for (std::size_t i = 1; i < path.size(); ++i) length += planar_distance(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
   }
   return length;
 }
 
 // A short run above the level the pass cuts at, then back down to it (or the end of the pass):
 // the tool lifting over a tab or a clamp, part of the lower level.
-void merge_tabs(std::vector<Layer>& slices) {
+std::vector<Layer> merge_tabs(std::vector<Layer> slices) {
+  if (slices.empty()) return slices;
+  std::vector<double> lengths;
+  lengths.reserve(slices.size());
+  for (const auto& slice : slices) lengths.push_back(xy_length(slice));
+  std::vector<Layer> out;
+  out.reserve(slices.size());
+  out.push_back(std::move(slices.front()));
+  double low_length = lengths.front();
   for (std::size_t k = 1; k < slices.size();) {
-    auto& low = slices[k - 1];
+    auto& low = out.back();
     const bool rises = slices[k].z > low.z + kLevelTolerance;
     const bool back = k + 1 == slices.size() || std::abs(slices[k + 1].z - low.z) < kLevelTolerance;
-    if (!rises || !back || xy_length(slices[k]) >= xy_length(low)) {
+    if (!rises || !back || lengths[k] >= low_length) {
+      out.push_back(std::move(slices[k]));
+      low_length = lengths[k];
       ++k;
       continue;
     }
@@ -159,9 +173,11 @@ void merge_tabs(std::vector<Layer>& slices) {
         if (low.workingsteps.back() < w) low.workingsteps.push_back(w);
       }
       low.z_top = std::max(low.z_top, slices[j].z_top);
+      low_length += lengths[j];  // the slice's moves, now the level's (its first point was the level's last)
     }
-    slices.erase(slices.begin() + static_cast<std::ptrdiff_t>(k), slices.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    k = last + 1;
   }
+  return out;
 }
 
 // Slices a milling pass at its cutting levels: each run of horizontal moves is a level; the
@@ -172,7 +188,6 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
   if (is_freeform(pass)) {
     Layer layer = make_layer(pass, ws, pass.points, 0);
     layer.freeform = true;
-    layer.arcs = pass.arcs;
     out.push_back(std::move(layer));
     return out;
   }
@@ -183,7 +198,7 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
   for (std::size_t i = 1; i < pass.points.size(); ++i) {
     const auto& a = pass.points[i - 1];
     const auto& b = pass.points[i];
-    const bool horizontal = std::abs(b.z - a.z) < kLevelTolerance && std::hypot(b.x - a.x, b.y - a.y) > 0;
+    const bool horizontal = std::abs(b.z - a.z) < kLevelTolerance && planar_distance(b.x - a.x, b.y - a.y) > 0;
     if (horizontal) {
       if (piece_has_level && std::abs(a.z - piece_level) > kLevelTolerance) {
         // A new level begins: close the current piece at its last point on the old level.
@@ -206,26 +221,15 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
     if (!piece_has_level && !out.empty() && piece.back().z >= out.back().z - kLevelTolerance) {
       auto& last = out.back().paths.back();
       last.insert(last.end(), piece.begin() + 1, piece.end());
-      for (std::size_t i = piece_first + 1; i < pass.points.size(); ++i) {
-        if (out.back().workingsteps.back() < pass.point_workingsteps[i]) {
-          out.back().workingsteps.push_back(pass.point_workingsteps[i]);
-        }
+      for (auto w : pass.workingsteps_of(piece_first + 1, pass.points.size())) {
+        if (out.back().workingsteps.back() < w) out.back().workingsteps.push_back(w);
       }
       out.back().z_top = std::max(out.back().z_top, piece.back().z);
     } else {
       out.push_back(make_layer(pass, ws, piece, piece_first));
     }
   }
-  merge_tabs(out);
-  for (auto& layer : out) {
-    for (const auto& arc : pass.arcs) {
-      if (std::min(arc.z_start, arc.z_end) >= layer.z - kLevelTolerance &&
-          std::max(arc.z_start, arc.z_end) <= layer.z_top + kLevelTolerance) {
-        layer.arcs.push_back(arc);
-      }
-    }
-  }
-  return out;
+  return merge_tabs(std::move(out));
 }
 
 bool boxes_touch(const Box2& a, const Box2& b) {
@@ -249,9 +253,21 @@ Box2 path_box(const std::vector<std::vector<Point3>>& paths, double grow) {
 
 bool CuttingPass::z_only() const {
   for (const auto& p : points) {
-    if (std::hypot(p.x - points.front().x, p.y - points.front().y) > 1e-3) return false;
+    if (planar_distance(p.x - points.front().x, p.y - points.front().y) > 1e-3) return false;
   }
   return true;
+}
+
+std::vector<std::size_t> CuttingPass::workingsteps_of(std::size_t first, std::size_t last) const {
+  std::vector<std::size_t> out;
+  for (std::size_t r = 0; r < workingstep_runs.size(); ++r) {
+    const std::size_t begin = workingstep_runs[r].first;
+    const std::size_t end = r + 1 < workingstep_runs.size() ? workingstep_runs[r + 1].first : points.size();
+    if (begin < last && first < end && (out.empty() || out.back() != workingstep_runs[r].second)) {
+      out.push_back(workingstep_runs[r].second);
+    }
+  }
+  return out;
 }
 
 std::vector<std::vector<Point2>> Layer::xy_paths() const {
@@ -272,14 +288,20 @@ bool is_hole_making_tool(setup::ToolType type) {
 }
 
 CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkingstep>& workingsteps,
-                                                double chord_tolerance) {
+                                                double chord_tolerance, const std::function<void()>& checkpoint) {
   CutterLocationAnalysis out;
+  // Layers as they are made; a layer merged into a later one leaves a dead slot (kept so that the
+  // run's index stays valid), removed at the end.
+  std::vector<Layer> layers;
+  std::vector<char> dead;
   std::size_t run_begin = 0;  // the first layer of the current run of one tool at one level
-  for (const auto& pass : cut_into_passes(workingsteps, chord_tolerance)) {
+  BoxIndex run_index(25.0);   // the run's layers by their extents
+  cut_into_passes(workingsteps, chord_tolerance, [&](CuttingPass&& pass) {
+    if (checkpoint) checkpoint();
     const auto& ws = workingsteps[pass.workingstep];
     if (pass.z_only() || (is_hole_making_tool(ws.tool.type) && ws.cycle)) {
       if (pass.z_min >= pass.points.front().z - kLevelTolerance) {
-        continue;  // a feed retract out of a hole cuts nothing new
+        return;  // a feed retract out of a hole cuts nothing new
       }
       DrillPass d;
       d.workingstep = pass.workingstep;
@@ -293,10 +315,11 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
       d.spindle_rpm = ws.spindle_rpm;
       if (ws.cycle) d.at = {ws.cycle->x, ws.cycle->y};
       out.drill_passes.push_back(std::move(d));
-      continue;
+      return;
     }
     if (ws.tool.diameter <= 0) {
-      throw InputError({"", 0, 0}, "workingstep " + std::to_string(pass.workingstep) + ": tool T" +
+      const std::uint32_t line = ws.moves.empty() ? 0 : ws.moves.front().source_line;
+      throw InputError({"", line, 1}, "workingstep " + std::to_string(pass.workingstep) + ": tool T" +
                                        std::to_string(ws.tool.number) +
                                        " has no diameter, so its cutting area is unknown");
     }
@@ -305,33 +328,45 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
       layer.extent = path_box(layer.paths, r);
       // Pieces of one tool at one level, one after the other, touching (also through others of
       // the run, as passes broken around an island are): one layer.
-      const bool continues_run = run_begin < out.layers.size() && !layer.freeform &&
-                                 !out.layers.back().freeform && out.layers.back().tool.number == layer.tool.number &&
-                                 std::abs(out.layers.back().z - layer.z) < kLevelTolerance;
-      if (!continues_run) run_begin = out.layers.size();
-      out.layers.push_back(std::move(layer));
+      const bool continues_run = run_begin < layers.size() && !layer.freeform && !layers.back().freeform &&
+                                 layers.back().tool.number == layer.tool.number &&
+                                 std::abs(layers.back().z - layer.z) < kLevelTolerance;
+      if (!continues_run) {
+        run_begin = layers.size();
+        run_index = BoxIndex(25.0);
+      }
+      layers.push_back(std::move(layer));
+      dead.push_back(0);
+      run_index.insert(layers.size() - 1, layers.back().extent);
       for (bool merged = true; merged;) {
         merged = false;
-        auto& last = out.layers.back();
-        for (std::size_t k = run_begin; k + 1 < out.layers.size(); ++k) {
-          if (!boxes_touch(out.layers[k].extent, last.extent)) continue;
-          auto& into = out.layers[k];
+        const std::size_t at = layers.size() - 1;
+        auto& last = layers[at];
+        for (auto k : run_index.candidates(last.extent)) {
+          if (k < run_begin || k >= at || dead[k] || !boxes_touch(layers[k].extent, last.extent)) continue;
+          auto& into = layers[k];
           for (auto& p : last.paths) into.paths.push_back(std::move(p));
-          into.arcs.insert(into.arcs.end(), last.arcs.begin(), last.arcs.end());
+          // Sorted and made unique once, at the end.
           into.workingsteps.insert(into.workingsteps.end(), last.workingsteps.begin(), last.workingsteps.end());
-          std::sort(into.workingsteps.begin(), into.workingsteps.end());
-          into.workingsteps.erase(std::unique(into.workingsteps.begin(), into.workingsteps.end()), into.workingsteps.end());
           into.z_top = std::max(into.z_top, last.z_top);
-          into.extent = path_box(into.paths, r);
+          into.extent = {std::min(into.extent.xmin, last.extent.xmin), std::min(into.extent.ymin, last.extent.ymin),
+                         std::max(into.extent.xmax, last.extent.xmax), std::max(into.extent.ymax, last.extent.ymax)};
           // The merged layer goes last, so that it can absorb the others it now touches.
-          Layer moved = std::move(into);
-          out.layers.erase(out.layers.begin() + static_cast<std::ptrdiff_t>(k));
-          out.layers.back() = std::move(moved);
+          layers[at] = std::move(into);
+          dead[k] = 1;
+          run_index.insert(at, layers[at].extent);
           merged = true;
           break;
         }
       }
     }
+  });
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    if (dead[i]) continue;
+    auto& w = layers[i].workingsteps;
+    std::sort(w.begin(), w.end());
+    w.erase(std::unique(w.begin(), w.end()), w.end());
+    out.layers.push_back(std::move(layers[i]));
   }
   return out;
 }

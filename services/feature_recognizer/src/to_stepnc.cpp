@@ -519,6 +519,10 @@ class Cc2Builder {
         }
         continue;
       }
+      if (const auto* probing = std::get_if<sn::WorkpieceProbing>(&elements[e])) {
+        out_.project.main_workplan.its_elements.push_back(*probing);  // kept as it is, in its place
+        continue;
+      }
       const auto& ws = *machining_[k];
       if (!owner_[k]) {
         keep_cc1_workingstep(ws);

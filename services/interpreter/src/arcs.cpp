@@ -12,11 +12,14 @@ using namespace canonical;
 namespace {
 
 constexpr double kTiny = 1e-12;
+// LinuxCNC's RADIUS_TOLERANCE_INCH/_MM: the R-format reach check and the zero-radius check.
 constexpr double kRadiusToleranceInch = 0.00005;
 constexpr double kRadiusToleranceMm = 0.00127;
-constexpr double kSpiralAbsToleranceInch = 0.001;  // LinuxCNC center_arc_radius_tolerance defaults
-constexpr double kSpiralAbsToleranceMm = 0.01;
+// LinuxCNC's SPIRAL_RELATIVE_TOLERANCE: an IJK arc whose end radius differs from its start
+// radius by more than this fraction AND by more than the absolute tolerance is refused.
 constexpr double kSpiralRelTolerance = 0.001;
+// ... and so is one whose radii differ by more than this many times the absolute tolerance.
+constexpr double kSpiralAbsoluteLimitFactor = 100.0;
 
 struct PlaneAxes {
   double Pose::*first;
@@ -84,7 +87,7 @@ void Executor::arc(const BlockCommand& b, int motion, const Pose& end) {
   } else {
     bool has_first = b.has(static_cast<char>(ax.first_letter - 'A' + 'a'));
     bool has_second = b.has(static_cast<char>(ax.second_letter - 'A' + 'a'));
-    if (!has_first && !has_second) {
+    if (!has_first && !has_second && !b.has_polar()) {
       const char* names[] = {"X and Y words missing for arc in XY plane", "Y and Z words missing for arc in YZ plane",
                              "X and Z words missing for arc in XZ plane"};
       fail(b.g_column[kGMotion], names[s_.plane == Plane::XY ? 0 : s_.plane == Plane::YZ ? 1 : 2]);
@@ -99,7 +102,7 @@ void Executor::arc(const BlockCommand& b, int motion, const Pose& end) {
 
   bool inch = s_.units == Units::Inches;
   double radius_tolerance = inch ? kRadiusToleranceInch : kRadiusToleranceMm;
-  double spiral_abs = inch ? kSpiralAbsToleranceInch : kSpiralAbsToleranceMm;
+  double spiral_abs = inch ? arc_tolerance_.inch : arc_tolerance_.mm;
   const Pose& cur = s_.position;
   double c1 = cur.*ax.first, c2 = cur.*ax.second;
   double e1 = end.*ax.first, e2 = end.*ax.second;
@@ -138,7 +141,7 @@ void Executor::arc(const BlockCommand& b, int motion, const Pose& end) {
     }
     double abs_err = std::fabs(r1 - r2);
     double rel_err = abs_err / std::max(r1, r2);
-    if (abs_err > spiral_abs || rel_err > kSpiralRelTolerance) {
+    if (abs_err > kSpiralAbsoluteLimitFactor * spiral_abs || (rel_err > kSpiralRelTolerance && abs_err > spiral_abs)) {
       char tail[128];
       std::snprintf(tail, sizeof tail, " r1=%.4f r2=%.4f abs_err=%.4g rel_err=%.4f%%", r1, r2, abs_err, rel_err * 100);
       fail(b.g_column[kGMotion], "Radius to end of arc differs from radius to start: " + where() + tail);
