@@ -13,12 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "cc2_to_cc1.hpp"
 #include "commands.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/gcode_writer/program_writer.hpp"
 #include "ncbridge/gcode_writer/stepnc_interpreter.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
+#include "ncbridge/setup/stock.hpp"
 #include "ncbridge/setup/tool_list.hpp"
 #include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
@@ -35,6 +37,7 @@ struct GcodeArguments {
   std::string tool_table;
   std::string tool_table_units = "mm";
   std::string tools;
+  std::string stock;
   std::string subroutine_path;
   std::string heidenhain_feed_units = "mm/min";
   std::string comments = "program";
@@ -113,8 +116,15 @@ int run_gcode(const GcodeArguments& args) {
   if (is_part21(args.input)) {
     // a CC1 file: the STEP-NC interpreter's calls; the program runs with the file's tools
     // unless a tool list is given
-    const auto read = step_writer::read_stepnc_file(args.input);
+    auto read = step_writer::read_stepnc_file(args.input);
     for (const auto& w : read.warnings) std::fprintf(stderr, "%s\n", w.to_string().c_str());
+    if (needs_toolpaths(read.project)) {  // a CC2 file: its toolpaths generated first (docs/toolpaths.md)
+      std::optional<setup::Stock> stock;
+      if (!args.stock.empty()) stock = setup::read_stock(args.stock);
+      std::vector<std::string> notes;
+      read.project = generate_cc1(read.project, stock, args.input, notes);
+      for (const auto& n : notes) std::fprintf(stderr, "ncbridge: warning: %s: %s\n", args.input.c_str(), n.c_str());
+    }
     if (options.tools.empty()) options.tools = gcode_writer::stepnc_tools(read.project);
     gcode_writer::StepncOptions stepnc;
     if (options.comments == gcode_writer::Comments::Source) {
@@ -152,8 +162,8 @@ int run_gcode(const GcodeArguments& args) {
 void add_gcode_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<GcodeArguments>();
   CLI::App* cmd = app.add_subcommand(
-      "gcode", "Write a program (any dialect) or a CC1 STEP-NC file as a program in a controller's dialect");
-  cmd->add_option("input", args->input, "Part program, or a CC1 Part 21 file")->required()->check(CLI::ExistingFile);
+      "gcode", "Write a program (any dialect) or a CC1/CC2 STEP-NC file as a program in a controller's dialect");
+  cmd->add_option("input", args->input, "Part program, or a CC1 or CC2 Part 21 file (CC2: its toolpaths generated)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--to", args->to, "Dialect to write")
       ->required()
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain"}));
@@ -165,6 +175,8 @@ void add_gcode_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--tool-table-units", args->tool_table_units, "Units of the tool table values")
       ->check(CLI::IsMember({"mm", "inch"}));
   cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML) the programs run with")->check(CLI::ExistingFile);
+  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML) a CC2 file without a rawpiece is cut from")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for called programs, ':'-separated");
   cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units,
                   "Unit of the input's Heidenhain F words (mm/s for FreeCAD's Heidenhain post)")

@@ -196,9 +196,16 @@ MillingOutput mill(PartModel& part, const MillingInput& in, const Options& o, st
     return mill_hole(part, in, o, warnings, op, cutter, sense, stepover, axial, allowance_side, floor);
   }
 
+  // A closed feature must hold the cutter (and its allowance) somewhere: else nothing of it can
+  // be cut to size (and a cutter reaching in from outside the stock would cut nothing).
+  const bool closed_feature = std::holds_alternative<sn::ClosedPocket>(*in.cc2_feature) || (slot && f.region.open_edges.empty());
+  if (closed_feature && !(slot && std::abs(width_minus_cutter) <= 0.01) &&
+      f.area.offset(-(r + allowance_side - 1e-4), kArcTolerance).empty()) {
+    fail(o, in, "the cutter (diameter " + std::to_string(diameter) + " mm) does not fit feature '" + f.region.id + "'");
+  }
   const ClearingArea area = clearing_area(part, f, floor, r, allowance_side, o.run_out);
   const bool centre_line = std::holds_alternative<sn::CenterMilling>(strategy) && slot && std::abs(width_minus_cutter) <= 0.01;
-  if (area.centres.empty() && !centre_line) {
+  if ((area.centres.empty() || area.area.intersected(area.centres.offset(r, kArcTolerance)).empty()) && !centre_line) {
     fail(o, in, "the cutter (diameter " + std::to_string(diameter) + " mm) does not fit feature '" + f.region.id + "'");
   }
   const material_check::Box2 near = grown(f.box, 2 * diameter + o.run_out);
@@ -224,8 +231,38 @@ MillingOutput mill(PartModel& part, const MillingInput& in, const Options& o, st
       continue;
     }
     std::vector<Cut> cuts;
-    if (std::holds_alternative<sn::CenterMilling>(strategy)) {
-      if (!slot) fail(o, in, "CENTER_MILLING is for slots; feature '" + f.region.id + "' is not one");
+    if (std::holds_alternative<sn::CenterMilling>(strategy) && !slot) {
+      // A face (or step) no wider than the cutter: one pass along its course through the middle
+      // of what is left, in and out past its ends.
+      double angle = f.region.frame.angle;
+      if (const auto* face = std::get_if<sn::PlanarFace>(in.cc2_feature)) angle = direction_angle(f.region.frame, face->course_of_travel.its_direction);
+      const Point2 u{std::cos(angle), std::sin(angle)}, v{-u.y, u.x};
+      double lo = 1e300, hi = -1e300, across_lo = 1e300, across_hi = -1e300;
+      for (const auto& ring : left.rings()) {
+        for (const auto& q : ring) {
+          const double along = q.x * u.x + q.y * u.y, across = q.x * v.x + q.y * v.y;
+          lo = std::min(lo, along), hi = std::max(hi, along);
+          across_lo = std::min(across_lo, across), across_hi = std::max(across_hi, across);
+        }
+      }
+      if (across_hi - across_lo > diameter + 0.01) {
+        // Wider than one pass (the recogniser also calls a face cut by one loop around its
+        // middle CENTER_MILLING): passes along its course, said in a warning.
+        if (index == 0) {
+          warnings.push_back(in.workingstep + ": CENTER_MILLING makes one pass, and feature '" + f.region.id + "' is " +
+                             std::to_string(across_hi - across_lo) + " mm wide across its course for a " + std::to_string(diameter) +
+                             " mm cutter: milled by passes along its course (BIDIRECTIONAL)");
+        }
+        cuts = parallel_cuts(area, left, angle, stepover, true, true, sense);
+      } else {
+        const double mid = (across_lo + across_hi) / 2, out = r + o.run_out;
+        auto at = [&](double along) { return Point2{u.x * along + v.x * mid, u.y * along + v.y * mid}; };
+        PlanarCurve line;
+        line.segments.emplace_back(LineSegment{at(lo - out), at(hi + out)});
+        if (index % 2) line = line.reversed();
+        cuts.push_back({std::move(line), false});
+      }
+    } else if (std::holds_alternative<sn::CenterMilling>(strategy)) {
       if (width_minus_cutter < -0.01) fail(o, in, "the cutter is wider than slot '" + f.region.id + "'");
       const auto& d = slot->course_of_travel.its_direction;
       const double angle = direction_angle(f.region.frame, d);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 #include <type_traits>
@@ -49,7 +50,7 @@ void check_options(const Options& o) {
 
 // The stock: the rawpiece's block, the options', or the features' extent.
 setup::Stock stock_of(const sn::Project& cc2, const std::vector<std::size_t>& used, const Options& o,
-                      std::vector<std::string>& warnings) {
+                      std::vector<std::string>& warnings, const std::function<std::string(std::size_t)>& step_of) {
   if (cc2.rawpiece && cc2.rawpiece->its_bounding_geometry) {
     const auto& b = *cc2.rawpiece->its_bounding_geometry;
     const auto& p = b.position.location;
@@ -69,7 +70,12 @@ setup::Stock stock_of(const sn::Project& cc2, const std::vector<std::size_t>& us
   s.max = {-1e300, -1e300, -1e300};
   for (auto index : used) {
     const auto& f = cc2.features[index];
-    const mc::FeatureRegion r = mc::feature_region(f, index, huge, o.source_name);
+    mc::FeatureRegion r;
+    try {
+      r = mc::feature_region(f, index, huge, o.source_name);
+    } catch (const InputError& e) {
+      throw InputError(e.where(), e.message() + " (machined by workingstep '" + step_of(index) + "')");
+    }
     std::vector<mc::PlanarCurve> curves = r.outline;
     if (std::holds_alternative<sn::GeneralOutsideProfile>(f)) curves = {r.outline.back()};
     if (std::holds_alternative<sn::Step>(f)) {
@@ -143,7 +149,8 @@ class Generator {
         largest_radius[ws->its_feature.index] = std::max(largest_radius[ws->its_feature.index], d / 2);
       }
     }
-    const setup::Stock stock = stock_of(cc2_, {used.begin(), used.end()}, o_, out_.warnings);
+    const setup::Stock stock =
+        stock_of(cc2_, {used.begin(), used.end()}, o_, out_.warnings, [this](std::size_t f) { return first_step_of(f); });
     std::vector<ShapedFeature> shaped;
     for (auto index : used) {
       ShapedFeature s;
@@ -333,7 +340,9 @@ class Generator {
       if (!(*d.cutting_depth > 0)) fail("cutting_depth must be positive");
       depth = *d.cutting_depth;
     }
-    if (region.through) {
+    // A through hole's sizing tools (drill, reamer, boring bar) go through with their full
+    // diameter; a centre or spot drill only marks the hole's start.
+    if (region.through && sizes_hole && !std::holds_alternative<sn::CenterDrilling>(op)) {
       const double through = region.depth + point + o_.breakthrough;
       if (depth < through - 1e-9) {
         if (d.cutting_depth) out_.warnings.push_back(ws.its_id + ": cutting depth " + std::to_string(depth) + " mm does not break through with the full diameter: " + std::to_string(through) + " mm");
