@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -29,14 +28,6 @@ const std::vector<std::string> kParts = {
     "face_mill",          "test_part",         "p01_block_reference", "p02_plate_center_zero",   "p03_bracket_steps",
     "p04_open_pockets",   "p05_slots",         "p06_nested_pockets",  "p07_helix_holes",         "p08_multi_level",
     "p09_small_part",     "p10_plate",         "p11_slots_rotated_pocket", "p12_freecad_style"};
-
-// Features the generator does not yet cut whole (docs/toolpaths.md, "Known limits"), with the
-// share of them it reaches today.
-const std::map<std::string, double> kKnownShort = {
-    // An outside profile whose ring of stock (1 mm) is narrower than the cutter's radius: the
-    // loop is taken as the cutter centres' region's pieces at the corners only.
-    {"p09_small_part/PROFILE1", 0.1422},
-};
 
 struct RoundTrip {
   ts::PipelineResult original;
@@ -120,17 +111,8 @@ TEST_P(CorpusRoundTrip, GeneratedToolpathsCutTheFeaturesAndNothingElse) {
   EXPECT_LE(m.max_gouge, 0.01) << "at " << m.max_gouge_at.x << " " << m.max_gouge_at.y << " " << m.max_gouge_at.z;
   EXPECT_EQ(m.rapid_collisions, 0u);
   EXPECT_EQ(m.plunges, 0u);
-  // Every feature cut to its design, within the tolerance and its operations' allowances; but
-  // for the known shortfalls below, asserted at their measured figure so a fix (or a worsening)
-  // shows.
-  for (const auto& f : m.features) {
-    const auto known = kKnownShort.find(name + "/" + f.id);
-    if (known != kKnownShort.end()) {
-      EXPECT_NEAR(f.reached_fraction, known->second, 0.005) << f.id << " (a known shortfall: docs/toolpaths.md)";
-    } else {
-      EXPECT_GE(f.reached_fraction, 0.999) << f.id << ": leftover " << f.max_leftover << " mm";
-    }
-  }
+  // Every feature cut to its design, within the tolerance and its operations' allowances.
+  for (const auto& f : m.features) EXPECT_GE(f.reached_fraction, 0.999) << f.id << ": leftover " << f.max_leftover << " mm";
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, CorpusRoundTrip, testing::ValuesIn(kParts),

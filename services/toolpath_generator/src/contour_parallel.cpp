@@ -24,7 +24,9 @@ std::vector<Cut> contour_parallel_cuts(const ClearingArea& c, const PolygonSet& 
   };
   std::vector<Loop> loops;
   PolygonSet left = left_in;
-  for (const PolygonSet* base : {&c.tight, &c.loose}) {
+  // The passes last: where the stock about a part is narrower than the cutter, only their
+  // band holds the loop along the part.
+  for (const PolygonSet* base : {&c.tight, &c.loose, &c.passes}) {
     if (nothing_left(left)) break;
     if (base->empty()) continue;
     for (int i = 0; i < 100000; ++i) {
