@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,16 @@ const std::vector<std::string> kParts = {
     "face_mill",          "test_part",         "p01_block_reference", "p02_plate_center_zero",   "p03_bracket_steps",
     "p04_open_pockets",   "p05_slots",         "p06_nested_pockets",  "p07_helix_holes",         "p08_multi_level",
     "p09_small_part",     "p10_plate",         "p11_slots_rotated_pocket", "p12_freecad_style"};
+
+// The recognition round trip is not identical on every part yet (docs/toolpaths.md, "Known
+// limits"): how many differences each such part has today, at most. Every other part must come
+// back with the same features and operations.
+const std::map<std::string, std::size_t> kKnownDifferences = {
+    {"p03_bracket_steps", 1},  // a face cut by CENTER_MILLING wider than the cutter comes back BIDIRECTIONAL
+    {"p08_multi_level", 10},   // steps 0.5 mm off; profile, step and open pocket read as other features
+    {"p11_slots_rotated_pocket", 1},  // a CONTOUR_PARALLEL pocket comes back BIDIRECTIONAL
+    {"p12_freecad_style", 3},  // a milled hole's strategy, an open pocket's sense, one open pocket 0.5 mm off
+};
 
 struct RoundTrip {
   ts::PipelineResult original;
@@ -113,6 +124,11 @@ TEST_P(CorpusRoundTrip, GeneratedToolpathsCutTheFeaturesAndNothingElse) {
   EXPECT_EQ(m.plunges, 0u);
   // Every feature cut to its design, within the tolerance and its operations' allowances.
   for (const auto& f : m.features) EXPECT_GE(f.reached_fraction, 0.999) << f.id << ": leftover " << f.max_leftover << " mm";
+  // Recognised again: the same features with the same operations and strategies.
+  const auto known = kKnownDifferences.find(name);
+  const std::size_t allowed = known == kKnownDifferences.end() ? 0 : known->second;
+  EXPECT_LE(r.recognised.differences.size(), allowed) << "the generated toolpaths are recognised as other features or operations";
+  EXPECT_GT(r.recognised.features, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, CorpusRoundTrip, testing::ValuesIn(kParts),

@@ -233,10 +233,13 @@ class Generator {
     out_.cc1.main_workplan.its_elements.push_back(std::move(r));
   }
 
-  // Through the security plane from where the tool is to `start`.
+  // Through the security plane from where the tool is to `start`: the retract a rapid movement
+  // of its own, so that a tool change (which the program makes between two rapid movements,
+  // docs/gcode.md) comes at the security plane.
   void move_to(const mc::Point3& start) {
     if (at_) {
-      add_rapid({*at_, {at_->x, at_->y, security_z_}, {start.x, start.y, security_z_}, start});
+      add_rapid({*at_, {at_->x, at_->y, security_z_}});
+      add_rapid({{at_->x, at_->y, security_z_}, {start.x, start.y, security_z_}, start});
     } else {
       add_rapid({{start.x, start.y, security_z_}, start});
     }
