@@ -21,6 +21,7 @@
 
 #include "cc1_report.hpp"
 #include "cc2_output.hpp"
+#include "cc2_to_cc1.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "feedback.hpp"
@@ -482,6 +483,11 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
                                  : step_writer::read_stepnc_file(run.program.path);
     for (const auto& d : read.warnings) warnings.push_back({"input", d.where, d.message});
     project = std::move(read.project);
+    if (args.level == "cc1" && needs_toolpaths(project)) {  // CC2 in: generate the toolpaths
+      std::vector<std::string> notes;
+      project = generate_cc1(project, stock, run.program.name, notes);
+      for (auto& n : notes) warnings.push_back({"generation", {run.program.name, 0, 0}, std::move(n)});
+    }
     t_built = Clock::now();
     SetupChecks checks(check_inputs(args, run.program, stock, nullptr), nullptr);
     for (const auto& e : project.main_workplan.its_elements) checks.element(project, e);
@@ -578,7 +584,7 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
 void add_convert_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ConvertArguments>();
   CLI::App* cmd = app.add_subcommand("convert", "Convert a part program into an ISO 14649 (STEP-NC) Part 21 file");
-  cmd->add_option("program", args->program, "Part program, or a CC1 Part 21 file to raise to --level cc2; - reads standard input")->required();
+  cmd->add_option("program", args->program, "Part program, a CC1 Part 21 file to raise to --level cc2, or a CC2 file to give toolpaths (--level cc1); - reads standard input")->required();
   cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md); needed for a program");
   cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML, docs/formats/stock.md); needed for a program");
   cmd->add_option("--dialect", args->dialect, "Program dialect")

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "cc2_to_cc1.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "feedback.hpp"
@@ -23,6 +24,7 @@
 #include "ncbridge/gcode_writer/stepnc_interpreter.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
+#include "ncbridge/setup/stock.hpp"
 #include "ncbridge/setup/tool_list.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
 #include "output_files.hpp"
@@ -39,6 +41,7 @@ struct GcodeArguments {
   std::string tool_table;
   std::string tool_table_units = "mm";
   std::string tools;
+  std::string stock;
   std::string subroutine_path;
   std::string heidenhain_feed_units = "mm/min";
   bool strict = false;
@@ -123,9 +126,10 @@ int run_gcode(const GcodeArguments& args, const Feedback& feedback) {
   if (!args.tool_table.empty() && !args.tools.empty()) throw UsageError("--tool-table and --tools: give one tool list");
   if (!args.tool_table.empty()) require_input_file(args.tool_table, "--tool-table");
   if (!args.tools.empty()) require_input_file(args.tools, "--tools");
+  if (!args.stock.empty()) require_input_file(args.stock, "--stock");
   OutputSet outputs;
   OutputFile& out = outputs.add(args.output, "-o");
-  for (const std::string* input : {&args.input, &args.tools, &args.tool_table}) outputs.protect(*input);
+  for (const std::string* input : {&args.input, &args.tools, &args.tool_table, &args.stock}) outputs.protect(*input);
   const Input input = open_input(args.input, "program");
 
   gcode_writer::Options options;
@@ -157,9 +161,18 @@ int run_gcode(const GcodeArguments& args, const Feedback& feedback) {
     // a CC1 file: the STEP-NC interpreter's calls; the program runs with the file's tools
     // unless a tool list is given
     progress.set("reading " + input.name);
-    const auto read = input.text ? step_writer::read_stepnc(*input.text, input.name) : step_writer::read_stepnc_file(input.path);
+    auto read = input.text ? step_writer::read_stepnc(*input.text, input.name) : step_writer::read_stepnc_file(input.path);
     progress.stop();
     for (const auto& w : read.warnings) print_warning(w.where, w.message);
+    if (needs_toolpaths(read.project)) {  // a CC2 file: its toolpaths generated first (docs/toolpaths.md)
+      progress.set("generating toolpaths");
+      std::optional<setup::Stock> stock;
+      if (!args.stock.empty()) stock = setup::read_stock(args.stock);
+      std::vector<std::string> notes;
+      read.project = generate_cc1(read.project, stock, input.name, notes);
+      progress.stop();
+      for (const auto& n : notes) print_warning(SourceLocation{input.name, 0, 0}, n);
+    }
     if (options.tools.empty()) options.tools = gcode_writer::stepnc_tools(read.project);
     gcode_writer::StepncOptions stepnc;
     if (options.comments == gcode_writer::Comments::Source) {
@@ -215,8 +228,10 @@ int run_gcode(const GcodeArguments& args, const Feedback& feedback) {
 void add_gcode_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<GcodeArguments>();
   CLI::App* cmd = app.add_subcommand(
-      "gcode", "Write a program (any dialect) or a CC1 STEP-NC file as a program in a controller's dialect");
-  cmd->add_option("input", args->input, "Part program, or a CC1 Part 21 file; - reads standard input")->required();
+      "gcode", "Write a program (any dialect) or a CC1/CC2 STEP-NC file as a program in a controller's dialect");
+  cmd->add_option("input", args->input,
+                  "Part program, or a CC1 or CC2 Part 21 file (CC2: its toolpaths generated); - reads standard input")
+      ->required();
   cmd->add_option("--to", args->to, "Dialect to write")
       ->required()
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain"}));
@@ -227,6 +242,7 @@ void add_gcode_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--tool-table-units", args->tool_table_units, "Units of the tool table values")
       ->check(CLI::IsMember({"mm", "inch"}));
   cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML) the programs run with");
+  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML) a CC2 file without a rawpiece is cut from");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for called programs, ':'-separated");
   cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units,
                   "Unit of the input's Heidenhain F words (mm/s for FreeCAD's Heidenhain post)")

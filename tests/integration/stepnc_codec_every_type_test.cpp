@@ -162,10 +162,11 @@ std::vector<Operation> every_operation() {
   out.emplace_back(tap);
   const std::vector<Two5DMillingStrategy> strategies{
       Unidirectional{Direction{1, 0, 0}, CutmodeType::Conventional},
-      Bidirectional{Direction{0, 1, 0}, LeftOrRight::Right},
-      ContourParallel{RotDirection::Cw, CutmodeType::Climb},
-      ContourSpiral{RotDirection::Ccw, CutmodeType::Conventional},
-      CenterMilling{}};
+      Bidirectional{Direction{0, 1, 0}, LeftOrRight::Right, 0.05, true},
+      ContourParallel{RotDirection::Cw, CutmodeType::Climb, std::nullopt, false},
+      ContourSpiral{RotDirection::Ccw, CutmodeType::Conventional, 0.25},
+      CenterMilling{},
+      CenterMilling{0.1, true}};
   for (const Two5DMillingStrategy& s : strategies) {
     out.emplace_back(two5d<PlaneRoughMilling>(9, s));
     out.emplace_back(two5d<PlaneFinishMilling>(10, s));

@@ -117,11 +117,11 @@ template <class Ar, Is<MachiningOperation> S> void fields(Ar& ar, S& v) {
      v.overcut_length);
 }
 template <class Ar, Is<FreeformOperation> S> void fields(Ar& ar, S& v) { ar(base<MachiningOperation>(v)); }
-template <class Ar, Is<Unidirectional> S> void fields(Ar& ar, S& v) { ar(v.feed_direction, v.cutmode); }
-template <class Ar, Is<Bidirectional> S> void fields(Ar& ar, S& v) { ar(v.feed_direction, v.stepover_direction); }
-template <class Ar, Is<ContourParallel> S> void fields(Ar& ar, S& v) { ar(v.rotation_direction, v.cutmode); }
-template <class Ar, Is<ContourSpiral> S> void fields(Ar& ar, S& v) { ar(v.rotation_direction, v.cutmode); }
-template <class Ar, Is<CenterMilling> S> void fields(Ar&, S&) {}
+template <class Ar, Is<Unidirectional> S> void fields(Ar& ar, S& v) { ar(v.feed_direction, v.cutmode, v.overlap, v.allow_multiple_passes); }
+template <class Ar, Is<Bidirectional> S> void fields(Ar& ar, S& v) { ar(v.feed_direction, v.stepover_direction, v.overlap, v.allow_multiple_passes); }
+template <class Ar, Is<ContourParallel> S> void fields(Ar& ar, S& v) { ar(v.rotation_direction, v.cutmode, v.overlap, v.allow_multiple_passes); }
+template <class Ar, Is<ContourSpiral> S> void fields(Ar& ar, S& v) { ar(v.rotation_direction, v.cutmode, v.overlap, v.allow_multiple_passes); }
+template <class Ar, Is<CenterMilling> S> void fields(Ar& ar, S& v) { ar(v.overlap, v.allow_multiple_passes); }
 // PLANE_ROUGH_MILLING ... BOTTOM_AND_SIDE_FINISH_MILLING add nothing to TWO5D_MILLING_OPERATION.
 template <class Ar, std::derived_from<Two5DMillingOperation> S>
 void fields(Ar& ar, S& v) {

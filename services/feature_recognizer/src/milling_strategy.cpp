@@ -6,6 +6,8 @@
 #include <map>
 #include <unordered_map>
 #include <numbers>
+#include <optional>
+#include <utility>
 
 namespace ncbridge::feature_recognizer {
 namespace {
@@ -224,6 +226,97 @@ bool find_circles(const Layer& layer, StrategyAnalysis& out) {
   return true;
 }
 
+// Parallel passes sweeping across the area (bidirectional, or unidirectional when nearly all
+// run one way), with the median stepover; nothing when the moves are not such passes.
+std::optional<std::pair<Strategy, double>> parallel_passes(const std::vector<Straight>& straights, double total,
+                                                           int closed_loops, double tool_r) {
+  // Passes back and forth never come back to where they were; nested contours do, once each.
+  if (closed_loops >= 2) return std::nullopt;
+  // Direction histogram of the long straight moves (1° bins, direction modulo 180°).
+  std::map<int, double> bins;
+  for (const auto& s : straights) {
+    if (s.length() < tool_r) continue;
+    double deg = std::atan2(s.b.y - s.a.y, s.b.x - s.a.x) * 180 / std::numbers::pi;
+    if (deg < 0) deg += 180;
+    bins[static_cast<int>(std::lround(deg)) % 180] += s.length();
+  }
+  int dominant = -1;
+  double dominant_length = 0;
+  for (const auto& [deg, len] : bins) {
+    const double around = len + (bins.count((deg + 1) % 180) ? bins[(deg + 1) % 180] : 0) +
+                          (bins.count((deg + 179) % 180) ? bins[(deg + 179) % 180] : 0);
+    if (around > dominant_length) dominant_length = around, dominant = deg;
+  }
+  const bool parallel = dominant >= 0 && dominant_length > 0.6 * total;
+
+  if (parallel) {
+    // Parallel passes sweep across the area: the offsets of successive passes move one way.
+    // Nested contours have long parallel sides too, but their offsets jump from side to side.
+    const double ux = std::cos(dominant * std::numbers::pi / 180), uy = std::sin(dominant * std::numbers::pi / 180);
+    int forward = 0, backward = 0;
+    std::vector<double> sequence;
+    for (const auto& s : straights) {
+      const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+      const double along = (dx * ux + dy * uy) / s.length();
+      if (std::abs(along) < std::cos(1.5 * std::numbers::pi / 180) || s.length() < tool_r) continue;
+      (along > 0 ? forward : backward)++;
+      sequence.push_back(-s.a.x * uy + s.a.y * ux);
+    }
+    int rising = 0, falling = 0;
+    std::vector<double> gaps;
+    for (std::size_t i = 1; i < sequence.size(); ++i) {
+      const double d = sequence[i] - sequence[i - 1];
+      if (std::abs(d) <= 0.05) continue;
+      (d > 0 ? rising : falling)++;
+      gaps.push_back(std::abs(d));
+    }
+    const int parallel_moves = forward + backward;
+    if (parallel_moves == 1 && closed_loops == 0) {
+      return std::pair{Strategy::CenterMilling, 0.0};  // one straight pass: a slot along its centre line
+    }
+    // Two passes side by side (joined by a rapid, as a face milled in two passes) sweep too.
+    const bool enough = parallel_moves >= 3 || (parallel_moves == 2 && closed_loops == 0);
+    const bool sweeping = enough && std::max(rising, falling) >= 0.75 * (rising + falling);
+    if (sweeping) {
+      std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
+      const double stepover = gaps.empty() ? 0 : gaps[gaps.size() / 2];
+      return std::pair{std::min(forward, backward) >= std::max(1, parallel_moves / 4) ? Strategy::Bidirectional
+                                                                                     : Strategy::Unidirectional,
+                       stepover};
+    }
+  }
+
+  return std::nullopt;
+}
+
+// The runs without the closed loops that end them (a finishing contour after the passes).
+std::vector<std::vector<Point2>> without_finishing_contour(std::vector<std::vector<Point2>> runs, double min_length) {
+  while (!runs.empty()) {
+    auto& run = runs.back();
+    if (run.size() < 3) break;
+    // The earliest point the run's end comes back to, at least min_length of path before it.
+    double along = 0;
+    std::vector<double> at(run.size(), 0);
+    for (std::size_t i = 1; i < run.size(); ++i) at[i] = at[i - 1] + std::hypot(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
+    along = at.back();
+    std::size_t start = run.size();
+    for (std::size_t j = 0; j + 1 < run.size(); ++j) {
+      if (along - at[j] > min_length && std::hypot(run[j].x - run.back().x, run[j].y - run.back().y) < 1e-2) {
+        start = j;
+        break;
+      }
+    }
+    if (start == run.size()) break;
+    if (start == 0) {
+      runs.pop_back();
+    } else {
+      run.resize(start + 1);
+      break;
+    }
+  }
+  return runs;
+}
+
 }  // namespace
 
 StrategyAnalysis analyse_strategy(const Layer& layer) {
@@ -264,58 +357,32 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
     return out;
   }
 
-  // Direction histogram of the long straight moves (1° bins, direction modulo 180°).
-  std::map<int, double> bins;
-  for (const auto& s : straights) {
-    if (s.length() < tool_r) continue;
-    double deg = std::atan2(s.b.y - s.a.y, s.b.x - s.a.x) * 180 / std::numbers::pi;
-    if (deg < 0) deg += 180;
-    bins[static_cast<int>(std::lround(deg)) % 180] += s.length();
+  // Parallel passes that end with a contour round the area (the finishing pass of a
+  // bidirectional pocketing): the passes before it tell the strategy.
+  if (const auto passes = parallel_passes(straights, total, out.closed_loops, tool_r)) {
+    out.strategy = passes->first;
+    out.stepover = passes->second;
+    return out;
   }
-  int dominant = -1;
-  double dominant_length = 0;
-  for (const auto& [deg, len] : bins) {
-    const double around = len + (bins.count((deg + 1) % 180) ? bins[(deg + 1) % 180] : 0) +
-                          (bins.count((deg + 179) % 180) ? bins[(deg + 179) % 180] : 0);
-    if (around > dominant_length) dominant_length = around, dominant = deg;
-  }
-  const bool parallel = dominant >= 0 && dominant_length > 0.6 * total;
-
-  if (parallel) {
-    // Parallel passes sweep across the area: the offsets of successive passes move one way.
-    // Nested contours have long parallel sides too, but their offsets jump from side to side.
-    const double ux = std::cos(dominant * std::numbers::pi / 180), uy = std::sin(dominant * std::numbers::pi / 180);
-    int forward = 0, backward = 0;
-    std::vector<double> sequence;
-    for (const auto& s : straights) {
-      const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-      const double along = (dx * ux + dy * uy) / s.length();
-      if (std::abs(along) < std::cos(1.5 * std::numbers::pi / 180) || s.length() < tool_r) continue;
-      (along > 0 ? forward : backward)++;
-      sequence.push_back(-s.a.x * uy + s.a.y * ux);
+  const auto before = without_finishing_contour(runs, 2 * std::max(tool_r, 0.5));
+  if (before.size() < runs.size() || (before.size() == runs.size() && !before.empty() && before.back().size() < runs.back().size())) {
+    std::vector<Straight> first;
+    double first_total = 0;
+    int first_loops = 0;
+    for (const auto& run : before) {
+      for (std::size_t i = 1; i < run.size(); ++i) {
+        Straight s{run[i - 1], run[i]};
+        first_total += s.length();
+        if (s.length() > 1e-6) first.push_back(s);
+      }
+      first_loops += count_closed_loops(run, 2 * std::max(tool_r, 0.5));
     }
-    int rising = 0, falling = 0;
-    std::vector<double> gaps;
-    for (std::size_t i = 1; i < sequence.size(); ++i) {
-      const double d = sequence[i] - sequence[i - 1];
-      if (std::abs(d) <= 0.05) continue;
-      (d > 0 ? rising : falling)++;
-      gaps.push_back(std::abs(d));
-    }
-    const int parallel_moves = forward + backward;
-    if (parallel_moves == 1 && out.closed_loops == 0) {
-      out.strategy = Strategy::CenterMilling;  // one straight pass: a slot along its centre line
-      return out;
-    }
-    // Two passes side by side (joined by a rapid, as a face milled in two passes) sweep too.
-    const bool enough = parallel_moves >= 3 || (parallel_moves == 2 && out.closed_loops == 0);
-    const bool sweeping = enough && std::max(rising, falling) >= 0.75 * (rising + falling);
-    if (sweeping) {
-      std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
-      out.stepover = gaps.empty() ? 0 : gaps[gaps.size() / 2];
-      out.strategy = std::min(forward, backward) >= std::max(1, parallel_moves / 4) ? Strategy::Bidirectional
-                                                                                    : Strategy::Unidirectional;
-      return out;
+    if (first_total > 0) {
+      if (const auto passes = parallel_passes(first, first_total, first_loops, tool_r)) {
+        out.strategy = passes->first;
+        out.stepover = passes->second;
+        return out;
+      }
     }
   }
 

@@ -334,7 +334,8 @@ const char* operation_word(OperationType t) {
 }
 
 std::optional<sn::Two5DMillingStrategy> strategy_of(const RecognizedOperation& op, const PathDirections& d,
-                                                    const Frame& frame, bool spindle_clockwise, bool outside) {
+                                                    const Frame& frame, bool spindle_clockwise, bool outside,
+                                                    double tool_diameter) {
   // Climb milling: the cutter's rotation and its travel along the wall agree. With a clockwise
   // (M3) spindle a pocket's contour run clockwise is conventional, counter-clockwise climb; an
   // outside profile the other way round.
@@ -344,13 +345,19 @@ std::optional<sn::Two5DMillingStrategy> strategy_of(const RecognizedOperation& o
     const bool climb = (ccw != outside) == spindle_clockwise;
     return climb ? sn::CutmodeType::Climb : sn::CutmodeType::Conventional;
   };
+  auto overlap = [&]() -> std::optional<double> {
+    if (!(op.radial_depth > 0) || !(tool_diameter > 0) || op.radial_depth > tool_diameter) return std::nullopt;
+    return tidy(1 - op.radial_depth / tool_diameter);
+  };
   auto feed = [&]() -> std::optional<sn::Direction> {
     if (!d.feed_direction) return std::nullopt;
     return frame.local_direction(*d.feed_direction);
   };
   switch (op.strategy) {
-    case Strategy::Unidirectional: return sn::Unidirectional{feed(), std::nullopt};
-    case Strategy::Bidirectional: return sn::Bidirectional{feed(), d.stepover_direction};
+    // Parallel passes state their stepover as the overlap of neighbouring passes (plane milling
+    // has no radial_cutting_depth to say it).
+    case Strategy::Unidirectional: return sn::Unidirectional{feed(), std::nullopt, overlap()};
+    case Strategy::Bidirectional: return sn::Bidirectional{feed(), d.stepover_direction, overlap()};
     case Strategy::CenterMilling: return sn::CenterMilling{};
     case Strategy::Contour:
     case Strategy::ContourParallel: return sn::ContourParallel{d.rotation, cutmode()};
@@ -668,12 +675,15 @@ class Cc2Builder {
           }
         }
       }
-      const auto directions = analyse_path_directions(cutting);
+      const auto& rop = features_[key.first].operations[key.second];
+      const auto directions = analyse_path_directions(
+          cutting, rop.strategy == Strategy::Bidirectional || rop.strategy == Strategy::Unidirectional);
       const auto& tech = out_.project.technology(milling->its_technology);
       const bool clockwise = tech.spindle.value_or(-1) <= 0;
       const auto& r = features_[key.first];
       milling->its_machining_strategy = strategy_of(r.operations[key.second], directions, frame_of(out_.project.features.at(key.first)),
-                                                    clockwise, r.type == FeatureType::GeneralOutsideProfile);
+                                                    clockwise, r.type == FeatureType::GeneralOutsideProfile,
+                                                    out_.project.tool(milling->its_tool).dimension.diameter);
     }
   }
 

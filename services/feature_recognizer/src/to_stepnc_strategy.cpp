@@ -51,7 +51,7 @@ std::vector<stepnc::CartesianPoint> curve_points(const stepnc::CompositeCurve& c
   return out;
 }
 
-PathDirections analyse_path_directions(const std::vector<const stepnc::CompositeCurve*>& cutting_curves) {
+PathDirections analyse_path_directions(const std::vector<const stepnc::CompositeCurve*>& cutting_curves, bool passes) {
   PathDirections out;
   // Horizontal moves, in order, and the deepest level among them.
   std::vector<Segment> moves;
@@ -69,6 +69,23 @@ PathDirections analyse_path_directions(const std::vector<const stepnc::Composite
   std::vector<Segment> level;
   for (const auto& s : moves) {
     if (std::abs(s.a.z - deepest) <= kLevelTolerance) level.push_back(s);
+  }
+  if (passes) {
+    // Closed loops ending the level (a finishing contour): left out.
+    for (bool found = true; found && level.size() > 1;) {
+      found = false;
+      const auto& end = level.back().b;
+      double length = 0;
+      for (std::size_t j = level.size(); j-- > 0;) {
+        length += level[j].length();
+        if (length > kShortestPass && std::hypot(level[j].a.x - end.x, level[j].a.y - end.y) < 1e-2) {
+          if (j == 0) break;
+          level.resize(j);
+          found = true;
+          break;
+        }
+      }
+    }
   }
 
   // Rotation: the sign of the area the level's path sweeps about +Z (shoelace over its moves).

@@ -16,7 +16,9 @@ struct PathDirections {
   std::optional<stepnc::RotDirection> rotation;     // sense of the path about +Z (signed area)
 };
 
-PathDirections analyse_path_directions(const std::vector<const stepnc::CompositeCurve*>& cutting_curves);
+// `passes`: the operation mills parallel passes; the contour a pocketing ends them with (its
+// finishing pass, coming back to where it began) does not tell their direction.
+PathDirections analyse_path_directions(const std::vector<const stepnc::CompositeCurve*>& cutting_curves, bool passes = false);
 
 // The points of a curve in order (arcs sampled every 10 degrees, helices with linear z).
 std::vector<stepnc::CartesianPoint> curve_points(const stepnc::CompositeCurve& curve);

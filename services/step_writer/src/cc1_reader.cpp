@@ -541,15 +541,18 @@ class Cc1Reader {
       if (n >= i.attributes().size() || attr(i, n).is_unset()) return std::nullopt;
       return direction(reference(i, n), i);
     };
-    if (e == "UNIDIRECTIONAL") return sn::Unidirectional{dir(2), cutmode(3)};
+    // TWO5D_MILLING_STRATEGY's overlap and allow_multiple_passes come first.
+    const std::optional<double> overlap = i.attributes().empty() ? std::nullopt : opt_number(i, 0);
+    const std::optional<bool> passes = i.attributes().size() < 2 ? std::nullopt : opt_flag(i, 1);
+    if (e == "UNIDIRECTIONAL") return sn::Unidirectional{dir(2), cutmode(3), overlap, passes};
     if (e == "BIDIRECTIONAL" || e == "BIDIRECTIONAL_MILLING") {
       std::optional<sn::LeftOrRight> side;
       if (attr(i, 3).is_enumeration()) side = attr(i, 3).as_enumeration() == "LEFT" ? sn::LeftOrRight::Left : sn::LeftOrRight::Right;
-      return sn::Bidirectional{dir(2), side};
+      return sn::Bidirectional{dir(2), side, overlap, passes};
     }
-    if (e == "CONTOUR_PARALLEL") return sn::ContourParallel{rot(2), cutmode(3)};
-    if (e == "CONTOUR_SPIRAL") return sn::ContourSpiral{rot(2), cutmode(3)};
-    if (e == "CENTER_MILLING") return sn::CenterMilling{};
+    if (e == "CONTOUR_PARALLEL") return sn::ContourParallel{rot(2), cutmode(3), overlap, passes};
+    if (e == "CONTOUR_SPIRAL") return sn::ContourSpiral{rot(2), cutmode(3), overlap, passes};
+    if (e == "CENTER_MILLING") return sn::CenterMilling{overlap, passes};
     warn(i, "milling strategy " + e + " is not kept");
     return std::nullopt;
   }

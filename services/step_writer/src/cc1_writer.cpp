@@ -542,8 +542,8 @@ class Cc1Writer {
         [&](const sn::Unidirectional& u) {
           const InstanceId dir = feed_direction(u.feed_direction);
           s_.begin("UNIDIRECTIONAL");
-          s_.unset();
-          s_.unset();
+          s_.opt_real(u.overlap);
+          s_.opt_boolean(u.allow_multiple_passes);
           s_.opt_ref(dir);
           cutmode(u.cutmode);
           return s_.end();
@@ -551,8 +551,8 @@ class Cc1Writer {
         [&](const sn::Bidirectional& b) {
           const InstanceId dir = feed_direction(b.feed_direction);
           s_.begin("BIDIRECTIONAL");
-          s_.unset();
-          s_.unset();
+          s_.opt_real(b.overlap);
+          s_.opt_boolean(b.allow_multiple_passes);
           s_.opt_ref(dir);
           if (b.stepover_direction) {
             s_.enumeration(*b.stepover_direction == sn::LeftOrRight::Left ? "LEFT" : "RIGHT");
@@ -564,24 +564,24 @@ class Cc1Writer {
         },
         [&](const sn::ContourParallel& c) {
           s_.begin("CONTOUR_PARALLEL");
-          s_.unset();
-          s_.unset();
+          s_.opt_real(c.overlap);
+          s_.opt_boolean(c.allow_multiple_passes);
           rotation(c.rotation_direction);
           cutmode(c.cutmode);
           return s_.end();
         },
         [&](const sn::ContourSpiral& c) {
           s_.begin("CONTOUR_SPIRAL");
-          s_.unset();
-          s_.unset();
+          s_.opt_real(c.overlap);
+          s_.opt_boolean(c.allow_multiple_passes);
           rotation(c.rotation_direction);
           cutmode(c.cutmode);
           return s_.end();
         },
-        [&](const sn::CenterMilling&) {
+        [&](const sn::CenterMilling& m) {
           s_.begin("CENTER_MILLING");
-          s_.unset();
-          s_.unset();
+          s_.opt_real(m.overlap);
+          s_.opt_boolean(m.allow_multiple_passes);
           return s_.end();
         }},
         *op.its_machining_strategy);

@@ -52,11 +52,32 @@ struct FreeformOperation : MachiningOperation {
 enum class CutmodeType : std::uint8_t { Climb, Conventional };
 enum class RotDirection : std::uint8_t { Cw, Ccw };
 enum class LeftOrRight : std::uint8_t { Left, Right };
-struct Unidirectional { std::optional<Direction> feed_direction; std::optional<CutmodeType> cutmode; friend bool operator==(const Unidirectional&, const Unidirectional&) = default; };
-struct Bidirectional { std::optional<Direction> feed_direction; std::optional<LeftOrRight> stepover_direction; friend bool operator==(const Bidirectional&, const Bidirectional&) = default; };
-struct ContourParallel { std::optional<RotDirection> rotation_direction; std::optional<CutmodeType> cutmode; friend bool operator==(const ContourParallel&, const ContourParallel&) = default; };
-struct ContourSpiral { std::optional<RotDirection> rotation_direction; std::optional<CutmodeType> cutmode; friend bool operator==(const ContourSpiral&, const ContourSpiral&) = default; };
-struct CenterMilling { friend bool operator==(const CenterMilling&, const CenterMilling&) = default; };
+// Each ends with TWO5D_MILLING_STRATEGY's own attributes: overlap (a ratio of the cutter's
+// diameter shared by neighbouring passes) and allow_multiple_passes.
+struct Unidirectional {
+  std::optional<Direction> feed_direction; std::optional<CutmodeType> cutmode;
+  std::optional<double> overlap; std::optional<bool> allow_multiple_passes;
+  friend bool operator==(const Unidirectional&, const Unidirectional&) = default;
+};
+struct Bidirectional {
+  std::optional<Direction> feed_direction; std::optional<LeftOrRight> stepover_direction;
+  std::optional<double> overlap; std::optional<bool> allow_multiple_passes;
+  friend bool operator==(const Bidirectional&, const Bidirectional&) = default;
+};
+struct ContourParallel {
+  std::optional<RotDirection> rotation_direction; std::optional<CutmodeType> cutmode;
+  std::optional<double> overlap; std::optional<bool> allow_multiple_passes;
+  friend bool operator==(const ContourParallel&, const ContourParallel&) = default;
+};
+struct ContourSpiral {
+  std::optional<RotDirection> rotation_direction; std::optional<CutmodeType> cutmode;
+  std::optional<double> overlap; std::optional<bool> allow_multiple_passes;
+  friend bool operator==(const ContourSpiral&, const ContourSpiral&) = default;
+};
+struct CenterMilling {
+  std::optional<double> overlap; std::optional<bool> allow_multiple_passes;
+  friend bool operator==(const CenterMilling&, const CenterMilling&) = default;
+};
 using Two5DMillingStrategy = std::variant<Unidirectional, Bidirectional, ContourParallel, ContourSpiral, CenterMilling>;
 
 struct Two5DMillingOperation : MachiningOperation {
