@@ -104,4 +104,23 @@ TEST(BadInput, ADanglingOperationReferenceIsRefused) {
   EXPECT_NE(e.find("operation is missing"), std::string::npos) << e;
 }
 
+TEST(BadInput, AWorkingstepOfMillionsOfPassesIsRefusedNotGenerated) {
+  // 0.001 mm deep layers with a 0.001 mm stepover: about 10^10 passes; refused before any is made.
+  auto p = nist_ex1();
+  auto [ws, pocket] = first_with<sn::ClosedPocket>(p);
+  ASSERT_NE(pocket, nullptr);
+  std::visit(
+      [](auto& op) {
+        if constexpr (std::is_base_of_v<sn::Two5DMillingOperation, std::decay_t<decltype(op)>>) {
+          op.its_machining_strategy.reset();
+          op.axial_cutting_depth = 0.001;
+          op.radial_cutting_depth = 0.001;
+        }
+      },
+      p.operations[ws->its_operation.index]);
+  const std::string e = refusal(p);
+  EXPECT_NE(e.find(ws->its_id), std::string::npos) << e;
+  EXPECT_NE(e.find("more than the generator's bound"), std::string::npos) << e;
+}
+
 }  // namespace

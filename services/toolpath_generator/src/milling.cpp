@@ -137,6 +137,8 @@ MillingOutput mill_hole(PartModel& part, const MillingInput& in, const Options& 
 
 }  // namespace
 
+constexpr double kMaxPassesPerWorkingstep = 50000;
+
 MillingOutput mill(PartModel& part, const MillingInput& in, const Options& o, std::vector<std::string>& warnings) {
   const auto& f = *in.feature;
   const auto& op = milling_of(*in.operation);
@@ -177,6 +179,16 @@ MillingOutput mill(PartModel& part, const MillingInput& in, const Options& o, st
   if (op.axial_cutting_depth) {
     if (!(*op.axial_cutting_depth > 0)) fail(o, in, "axial_cutting_depth must be positive");
     axial = *op.axial_cutting_depth;
+  }
+  // A bound on one workingstep's work, whatever the file says (a 0.01 mm step over a metre is
+  // a hundred thousand passes a level): refused, naming the numbers that make it so.
+  const double extent = std::max(f.box.xmax - f.box.xmin, f.box.ymax - f.box.ymin);
+  const double passes = std::ceil(extent / stepover) + 1, layers = std::ceil((top - floor) / axial);
+  if (!(passes * layers <= kMaxPassesPerWorkingstep)) {
+    fail(o, in, "feature '" + f.region.id + "' would need about " + std::to_string(static_cast<long long>(std::min(passes, 1e15))) +
+                    " passes a level on " + std::to_string(static_cast<long long>(std::min(layers, 1e15))) +
+                    " levels, more than the generator's bound of " + std::to_string(static_cast<long long>(kMaxPassesPerWorkingstep)) +
+                    " passes: give a larger stepover (overlap, radial_cutting_depth) or axial_cutting_depth");
   }
   LoopSense sense;
   if (in.technology->spindle && *in.technology->spindle > 0) sense.spindle_clockwise = false;
