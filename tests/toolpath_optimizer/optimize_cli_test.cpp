@@ -37,7 +37,7 @@ TEST_F(OptimizeCli, WritesTheProgramAndTheReport) {
   const auto run = run_program({NCBRIDGE_EXECUTABLE, "optimize", kCylinder, "--flavor", "marlin", "--tolerance", "0.025",
                                 "-o", out.string(), "--report", report.string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_NE(run.err.find("optimize: 16169 -> "), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("cylinder_arcs.gcode: 16169 -> "), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("largest deviation"), std::string::npos);
   const auto j = nlohmann::json::parse(testing::read_file(report));
   EXPECT_EQ(j["input_counts"]["motion_blocks"], 16169);
