@@ -11,6 +11,7 @@
 #include <cmath>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -59,6 +60,29 @@ struct ConvertArguments {
   std::optional<double> security_plane;
   bool strict = false;
   std::vector<int> machine_functions;
+  double max_seconds = 0;  // 0: no limit
+};
+
+// Throws once the conversion has run longer than --max-seconds (an InputError: the program is
+// too costly to convert within the bound).
+class TimeLimit {
+ public:
+  TimeLimit(const ConvertArguments& args, Clock::time_point start) : program_(args.program), seconds_(args.max_seconds) {
+    if (seconds_ > 0) deadline_ = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds_));
+  }
+  void check() const {
+    if (!deadline_ || Clock::now() <= *deadline_) return;
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", seconds_);
+    throw InputError({program_, 1, 1}, std::string("the conversion ran longer than --max-seconds (") + text +
+                                           " s) and was stopped; nothing was written");
+  }
+  bool set() const { return deadline_.has_value(); }
+
+ private:
+  std::string program_;
+  double seconds_;
+  std::optional<Clock::time_point> deadline_;
 };
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
@@ -77,8 +101,8 @@ interpreter::Dialect dialect_of(const std::string& name) {
 // says, and feeding the progress line.
 class TimedSink final : public canonical::Sink {
  public:
-  TimedSink(cc1_builder::Cc1Builder& builder, ProgramFacts& facts, Progress& progress, bool timed)
-      : builder_(builder), facts_(facts), progress_(progress), timed_(timed) {}
+  TimedSink(cc1_builder::Cc1Builder& builder, ProgramFacts& facts, Progress& progress, bool timed, const TimeLimit& limit)
+      : builder_(builder), facts_(facts), progress_(progress), timed_(timed), limit_(limit) {}
   void source_file(std::uint32_t index, std::string_view path) override {
     facts_.source_file(index, path);
     builder_.source_file(index, path);
@@ -92,6 +116,7 @@ class TimedSink final : public canonical::Sink {
     } else {
       builder_.call(c);
     }
+    if ((++calls_ & 0xFFF) == 0) limit_.check();
     progress_.tick([&] {
       return "converting: line " + std::to_string(c.source.line) + ", " + std::to_string(builder_.calls_seen()) +
              " canonical calls";
@@ -109,6 +134,8 @@ class TimedSink final : public canonical::Sink {
   ProgramFacts& facts_;
   Progress& progress_;
   bool timed_;
+  const TimeLimit& limit_;
+  std::uint64_t calls_ = 0;
   Clock::duration spent_{};
 };
 
@@ -362,6 +389,7 @@ void refuse_warnings_if_strict(const ConvertArguments& args, const std::vector<W
 // CC1 from a program, streamed: interpreter -> cc1_builder -> (Part 21 writer, report) element
 // by element; the model is never whole in memory.
 int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_point t0) {
+  const TimeLimit limit(args, t0);
   const std::optional<setup::Stock> stock = setup::read_stock(args.stock);
   const cc1_builder::Options options = builder_options(args, stock);
   run.feedback.detail(setup_detail(options, args));
@@ -377,7 +405,7 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
   SetupChecks checks(check_inputs(args, run.program, stock, &options.tools), &facts);
   ElementWriter elements(writer, report ? &*report : nullptr, checks);
   cc1_builder::Cc1Builder builder(options, &elements);
-  TimedSink sink(builder, facts, *run.progress, report.has_value());
+  TimedSink sink(builder, facts, *run.progress, report.has_value(), limit);
   const auto t_interpret = Clock::now();
   interpret(run.program, interp, sink);
   const auto t_built = Clock::now();
@@ -435,6 +463,7 @@ ConvertRun open_run(const ConvertArguments& args, Verbosity verbosity) {
 int run_convert(const ConvertArguments& args, Verbosity verbosity) {
   const auto t0 = Clock::now();
   ConvertRun run = open_run(args, verbosity);
+  const TimeLimit limit(args, t0);
   const bool part21_input = is_part21_file(run.program);
   if (!part21_input && (args.tools.empty() || args.stock.empty())) {
     throw UsageError("converting a program needs --tools and --stock");
@@ -465,7 +494,7 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
     const interpreter::Options interp = interpreter_options(args, run, options.tools, read_warnings);
     cc1_builder::Cc1Builder builder(options);
     ProgramFacts facts;
-    TimedSink sink(builder, facts, *run.progress, !args.report.empty());
+    TimedSink sink(builder, facts, *run.progress, !args.report.empty(), limit);
     t_interpret = Clock::now();
     interpret(run.program, interp, sink);
     t_built = Clock::now();
@@ -483,7 +512,9 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
   std::optional<Cc2Output> cc2;
   if (args.level == "cc2") {
     run.progress->set("recognising features");
-    cc2 = build_cc2(project, stock, run.program.name);
+    std::function<void()> checkpoint;
+    if (limit.set()) checkpoint = [&limit] { limit.check(); };
+    cc2 = build_cc2(project, stock, run.program.name, checkpoint);
     run.feedback.detail("recognised " + count(cc2->features.size(), "feature", "features") + " in " +
                         seconds(ms(Clock::now() - t_built) / 1000));
   }
@@ -568,6 +599,9 @@ void add_convert_command(CLI::App& app, int& exit_code) {
                   "M codes that are the machine builder's machine functions (no motion), beyond the dialect's list: "
                   "read with a warning")
       ->delimiter(',');
+  cmd->add_option("--max-seconds", args->max_seconds,
+                  "Stop with an error (writing nothing) once the conversion has run this long (default: no limit)")
+      ->check(CLI::NonNegativeNumber);
   cmd->callback([args, cmd, &exit_code]() { exit_code = run_convert(*args, verbosity_of(*cmd)); });
 }
 

@@ -43,6 +43,7 @@ struct GcodeArguments {
   bool block_numbers_flag = false;
   std::optional<std::uint32_t> program_number;
   std::string program_name;
+  bool drop_path_tolerance = false;
 };
 
 std::vector<std::filesystem::path> split_path(const std::string& text) {
@@ -104,6 +105,7 @@ int run_gcode(const GcodeArguments& args) {
   if (args.program_number) options.program_number = *args.program_number;
   options.decimals = args.decimals;
   options.block_numbers = args.block_numbers;
+  options.drop_path_tolerance = args.drop_path_tolerance;
   options.comments = args.comments == "none"     ? gcode_writer::Comments::None
                      : args.comments == "source" ? gcode_writer::Comments::Source
                                                  : gcode_writer::Comments::Program;
@@ -115,7 +117,10 @@ int run_gcode(const GcodeArguments& args) {
     for (const auto& w : read.warnings) std::fprintf(stderr, "%s\n", w.to_string().c_str());
     if (options.tools.empty()) options.tools = gcode_writer::stepnc_tools(read.project);
     gcode_writer::StepncOptions stepnc;
-    stepnc.name_workingsteps = options.comments == gcode_writer::Comments::Source;
+    if (options.comments == gcode_writer::Comments::Source) {
+      stepnc.name_workingsteps = true;  // a workingstep's name says where its blocks come from
+      options.comments = gcode_writer::Comments::Program;
+    }
     step_writer::AtomicFile file(args.output);
     gcode_writer::ProgramWriter writer(options, [&](std::string_view piece) { file.write(piece); });
     gcode_writer::interpret_stepnc(read.project, args.input, stepnc, writer);
@@ -174,6 +179,8 @@ void add_gcode_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--program-number", args->program_number, "Fanuc/Mach3 O number of the program (default 1000)")
       ->check(CLI::Range(1, 9999));
   cmd->add_option("--program-name", args->program_name, "Program name (default: the output file's name)");
+  cmd->add_flag("--drop-path-tolerance", args->drop_path_tolerance,
+                "Write LinuxCNC's G64 P tolerance as the dialect's plain continuous mode (it has no tolerance)");
   cmd->callback([args, numbers, &exit_code]() {
     if (numbers->count() > 0) args->block_numbers = args->block_numbers_flag;
     exit_code = run_gcode(*args);

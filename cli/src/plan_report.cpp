@@ -48,6 +48,28 @@ Frame frame_of(const pr::Feature& f) {
   return {p.location.x, p.location.y, n > 0 ? p.ref_direction.x / n : 1, n > 0 ? p.ref_direction.y / n : 0};
 }
 
+// A closed outline's corners with its arcs cut into chords of at most 10 degrees (the report and
+// the page draw polygons).
+std::vector<std::pair<double, double>> outline_points(const std::vector<pr::OutlineVertex>& outline) {
+  std::vector<std::pair<double, double>> points;
+  const std::size_t n = outline.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& a = outline[i];
+    const auto& b = outline[(i + 1) % n];
+    points.emplace_back(a.x, a.y);
+    if (a.bulge == 0) continue;
+    const double chord = std::hypot(b.x - a.x, b.y - a.y);
+    if (chord < 1e-12) continue;
+    const double sweep = 4 * std::atan(a.bulge);
+    const double d = chord * (1 - a.bulge * a.bulge) / (4 * a.bulge);
+    const double cx = (a.x + b.x) / 2 - (b.y - a.y) / chord * d, cy = (a.y + b.y) / 2 + (b.x - a.x) / chord * d;
+    const double r = std::hypot(a.x - cx, a.y - cy), start = std::atan2(a.y - cy, a.x - cx);
+    const int k = std::max(2, static_cast<int>(std::ceil(std::abs(sweep) * 18 / std::numbers::pi)));
+    for (int j = 1; j < k; ++j) points.emplace_back(cx + r * std::cos(start + sweep * j / k), cy + r * std::sin(start + sweep * j / k));
+  }
+  return points;
+}
+
 double angle_of(double cx, double sx) {
   double a = std::atan2(sx, cx) * 180 / std::numbers::pi;
   while (a < 0) a += 180;
@@ -108,8 +130,8 @@ fr::RecognizedFeature as_recognized(const pr::Feature& f) {
   } else {
     p.shape = fr::ProfileShape::GeneralClosed;
     double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
-    for (const auto& v : f.boundary) {
-      const fr::Point2 w = frame.world(v.x, v.y);
+    for (const auto& [x, y] : outline_points(f.boundary)) {
+      const fr::Point2 w = frame.world(x, y);
       p.outline.push_back(w);
       xmin = std::min(xmin, w.x), xmax = std::max(xmax, w.x), ymin = std::min(ymin, w.y), ymax = std::max(ymax, w.y);
     }

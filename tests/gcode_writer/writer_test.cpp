@@ -7,6 +7,7 @@
 
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/gcode_writer/program_writer.hpp"
+#include "ncbridge/gcode_writer/stepnc_interpreter.hpp"
 #include "ncbridge/interpreter/canon_printer.hpp"
 #include "support/listing.hpp"
 #include "support/same_motion.hpp"
@@ -182,6 +183,97 @@ TEST(Refusals, NameTheConstructTheDialectAndTheSourceLine) {
     EXPECT_EQ(e.where().file, "part.ngc");
     EXPECT_EQ(e.where().line, 4u);
     EXPECT_NE(std::string(e.what()).find("fanuc cannot express constant surface speed"), std::string::npos) << e.what();
+  }
+}
+
+// A CC1 project made in memory (as the toolpath generator will hand one over).
+stepnc::Project one_cut_project() {
+  stepnc::Project p;
+  stepnc::MillingCuttingTool tool;
+  tool.its_id = "T4 END MILL";
+  tool.number = 4;
+  tool.dimension.diameter = 10;
+  tool.tool_offset_length = 60;
+  p.tools.push_back(tool);
+  stepnc::MillingTechnology tech;
+  tech.feedrate = 0.01;  // 600 mm/min
+  tech.spindle = -50;    // 3000 rpm clockwise
+  p.technologies.push_back(tech);
+  p.machine_functions.push_back({});
+  stepnc::ToolpathFeature feature;
+  feature.its_id = "TOOLPATH FEATURE1";
+  p.features.push_back(feature);
+  stepnc::FreeformOperation op;
+  op.its_id = "CUT";
+  stepnc::CutterLocationTrajectory path;
+  path.basiccurve.segments.push_back(stepnc::Polyline{{{0, 0, 5}, {0, 0, -1}, {20, 0, -1}}});
+  op.its_toolpath = stepnc::ToolpathList{{path}};
+  p.operations.push_back(op);
+  stepnc::MachiningWorkingstep ws;
+  ws.its_id = "WS CUT";
+  ws.its_secplane.position.location.z = 10;
+  p.main_workplan.its_elements.push_back(ws);
+  return p;
+}
+
+TEST(StepncInterpreter, AProjectInMemoryIsWrittenAndReadsBack) {
+  const stepnc::Project project = one_cut_project();
+  for (gcode_writer::Dialect d : kDialects) {
+    SCOPED_TRACE(std::string(gcode_writer::dialect_name(d)));
+    gcode_writer::Options options;
+    options.dialect = d;
+    options.tools = gcode_writer::stepnc_tools(project);
+    std::string text;
+    {
+      gcode_writer::ProgramWriter writer(options, [&](std::string_view piece) { text.append(piece); });
+      gcode_writer::interpret_stepnc(project, "memory.stp", {}, writer);
+    }
+    interpreter::Options back;
+    back.dialect = reader_of(d);
+    back.tools = options.tools;
+    const std::string listing = ncbridge::testing::canon_listing_of_text(text, "p", back);
+    // above the start at the security plane, down to it, the cut at 600 mm/min and 3000 rpm
+    EXPECT_NE(listing.find("STRAIGHT_TRAVERSE(0.0000, 0.0000, 10.0000"), std::string::npos) << listing;
+    EXPECT_NE(listing.find("SET_FEED_RATE(600.0000)"), std::string::npos) << listing;
+    EXPECT_NE(listing.find("SET_SPINDLE_SPEED(0, 3000.0000)"), std::string::npos) << listing;
+    EXPECT_NE(listing.find("STRAIGHT_FEED(20.0000, 0.0000, -1.0000"), std::string::npos) << listing;
+    EXPECT_NE(listing.find("USE_TOOL_LENGTH_OFFSET(0.0000 0.0000 60.0000"), std::string::npos) << listing;
+  }
+}
+
+TEST(StepncInterpreter, ACc2OperationWithoutToolpathIsALocatedError) {
+  stepnc::Project project = one_cut_project();
+  stepnc::PlaneRoughMilling rough;
+  rough.its_id = "ROUGH";
+  project.operations[0] = rough;
+  gcode_writer::ProgramWriter writer(gcode_writer::Options{}, [](std::string_view) {});
+  try {
+    gcode_writer::interpret_stepnc(project, "cc2.stp", {}, writer);
+    FAIL() << "a CC2 operation without toolpath was written";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, "cc2.stp");
+    EXPECT_EQ(e.where().line, 1u);
+    EXPECT_NE(std::string(e.what()).find("WS CUT"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("PLANE_ROUGH_MILLING without an explicit toolpath"), std::string::npos) << e.what();
+  }
+}
+
+TEST(StepncInterpreter, ToolpathsFollowTheFeaturePlacementOrTheSetup) {
+  stepnc::Project project = one_cut_project();
+  auto& feature = std::get<stepnc::ToolpathFeature>(project.features[0]);
+  feature.feature_placement.location = {100, 50, 0};
+  for (const auto frame : {gcode_writer::StepncOptions::ToolpathFrame::Feature, gcode_writer::StepncOptions::ToolpathFrame::Setup}) {
+    gcode_writer::StepncOptions options;
+    options.toolpath_frame = frame;
+    struct Last final : canonical::Sink {
+      canonical::Pose end;
+      void call(const canonical::Call& c) override {
+        if (const auto* f = std::get_if<canonical::StraightFeed>(&c.data)) end = f->end;
+      }
+    } last;
+    gcode_writer::interpret_stepnc(project, "p.stp", options, last);
+    EXPECT_DOUBLE_EQ(last.end.x, frame == gcode_writer::StepncOptions::ToolpathFrame::Feature ? 120 : 20);
+    EXPECT_DOUBLE_EQ(last.end.y, frame == gcode_writer::StepncOptions::ToolpathFrame::Feature ? 50 : 0);
   }
 }
 

@@ -170,6 +170,14 @@ struct Cc1Builder::State {
     return loc;
   }
   void warn(const canonical::Source& s, std::string message) { warnings.push_back({where(s), std::move(message)}); }
+  // An error names file:line:column: a canonical call knows its block, not a word in it, so the
+  // block's first column (line 1 for a call the interpreter made before any block).
+  SourceLocation error_at(const canonical::Source& s) const {
+    SourceLocation loc = where(s);
+    if (loc.line == 0) loc.line = 1;
+    loc.column = 1;
+    return loc;
+  }
 
   // A warning a program may repeat on any number of lines: the first kRepeatedWarnings are
   // given, the rest counted and summed up at the end, so that warnings do not grow with the
@@ -211,7 +219,7 @@ struct Cc1Builder::State {
     }
     const setup::Tool* tool = options.tools.find(number);
     if (tool == nullptr) {
-      throw InputError(where(s), number == 0 ? "cutting motion with no tool loaded (no T.. M6 before it)"
+      throw InputError(error_at(s), number == 0 ? "cutting motion with no tool loaded (no T.. M6 before it)"
                                              : "tool T" + std::to_string(number) + " is not in the tool list");
     }
     if (info) *info = tool;
@@ -412,7 +420,7 @@ struct Cc1Builder::State {
 
   // A NURBS in the XY plane at the current height (G5, G5.1, G5.2/G5.3): one B-spline segment.
   void nurbs_feed(const canonical::Call& c, const canonical::NurbsFeed& f) {
-    if (f.control_points.empty()) throw InputError(where(c.source), "NURBS_FEED without control points");
+    if (f.control_points.empty()) throw InputError(error_at(c.source), "NURBS_FEED without control points");
     const double z = m.position ? m.position->z : 0.0;
     std::vector<stepnc::CartesianPoint> points;
     std::vector<double> weights;
@@ -425,7 +433,7 @@ struct Cc1Builder::State {
     try {
       spline = nurbs_curve(points, weights, f.order);
     } catch (const std::invalid_argument& e) {
-      throw InputError(where(c.source), e.what());
+      throw InputError(error_at(c.source), e.what());
     }
     if (m.plane != canonical::Plane::XY && !warned_nurbs_plane) {
       warn(c.source, "a NURBS (G5, G5.1, G5.2) outside the XY plane: its control points are taken in XY, as LinuxCNC does");

@@ -70,7 +70,7 @@ void cut_into_passes(const std::vector<ToolpathWorkingstep>& workingsteps, doubl
     at = ws.start;
     for (const auto& move : ws.moves) {
       if (!finite(move.end) || !std::isfinite(move.center_x) || !std::isfinite(move.center_y)) {
-        throw InputError({"", move.source_line, 0}, "workingstep " + std::to_string(w) +
+        throw InputError({"", move.source_line, 1}, "workingstep " + std::to_string(w) +
                                                         ": a move has a coordinate that is not a finite number");
       }
       if (move.kind == MoveKind::Rapid) {
@@ -288,7 +288,7 @@ bool is_hole_making_tool(setup::ToolType type) {
 }
 
 CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkingstep>& workingsteps,
-                                                double chord_tolerance) {
+                                                double chord_tolerance, const std::function<void()>& checkpoint) {
   CutterLocationAnalysis out;
   // Layers as they are made; a layer merged into a later one leaves a dead slot (kept so that the
   // run's index stays valid), removed at the end.
@@ -297,6 +297,7 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
   std::size_t run_begin = 0;  // the first layer of the current run of one tool at one level
   BoxIndex run_index(25.0);   // the run's layers by their extents
   cut_into_passes(workingsteps, chord_tolerance, [&](CuttingPass&& pass) {
+    if (checkpoint) checkpoint();
     const auto& ws = workingsteps[pass.workingstep];
     if (pass.z_only() || (is_hole_making_tool(ws.tool.type) && ws.cycle)) {
       if (pass.z_min >= pass.points.front().z - kLevelTolerance) {
@@ -317,7 +318,8 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
       return;
     }
     if (ws.tool.diameter <= 0) {
-      throw InputError({"", 0, 0}, "workingstep " + std::to_string(pass.workingstep) + ": tool T" +
+      const std::uint32_t line = ws.moves.empty() ? 0 : ws.moves.front().source_line;
+      throw InputError({"", line, 1}, "workingstep " + std::to_string(pass.workingstep) + ": tool T" +
                                        std::to_string(ws.tool.number) +
                                        " has no diameter, so its cutting area is unknown");
     }

@@ -3,6 +3,7 @@
 // at every rapid), drilling passes told from milling ones, and milling passes sliced into
 // layers (one cutting level each, the plunges and ramps that reach it included).
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "ncbridge/feature_recognizer/toolpath.hpp"
@@ -34,6 +35,7 @@ struct Layer {
   std::vector<std::vector<Point3>> paths;  // one per pass piece
   double feed = 0, spindle_rpm = 0;
   bool freeform = false;                   // x, y and z vary together (3D surface machining)
+  bool coarse = false;                     // beyond the work limit: no swept area (its extent stands for it)
   Region area;                             // the tool's swept region (filled in by the caller)
   Box2 extent;                             // bounding box of the swept region
   std::vector<std::vector<Point2>> xy_paths() const;
@@ -54,8 +56,9 @@ struct CutterLocationAnalysis {
   std::vector<Layer> layers;  // milling layers in machining order
 };
 
+// `checkpoint` (if set) is called after each cutting pass.
 CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkingstep>& workingsteps,
-                                                double chord_tolerance);
+                                                double chord_tolerance, const std::function<void()>& checkpoint = {});
 
 // True for tools that only cut along their axis (drills, reamers, taps, boring bars).
 bool is_hole_making_tool(setup::ToolType type);

@@ -256,6 +256,7 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
 // them.
 class RemovedBefore {
  public:
+  RemovedBefore() = default;  // nothing
   RemovedBefore(const MillingGroup& group, const std::vector<MillingGroup>& groups, const PartEnvelope& part) {
     auto near = group.area.bbox();
     if (!near) return;
@@ -311,6 +312,31 @@ std::vector<Point2> rectangle_course(const OrientedRectangle& rect, double end_i
           {rect.center.x + half * std::cos(a), rect.center.y + half * std::sin(a)}};
 }
 
+// A group of coarse layers (beyond the work limit): a `region` of the box its paths sweep,
+// from its floor, with one operation per layer.
+ClassifiedFeature coarse_feature(const MillingGroup& group, const std::vector<Layer>& layers) {
+  ClassifiedFeature out;
+  out.order = group.sequence;
+  auto& f = out.feature;
+  f.type = FeatureType::Region;
+  f.approximate = true;
+  f.bottom = BottomCondition::General;
+  f.bottom_z = group.floor;
+  Box2 box{1e300, 1e300, -1e300, -1e300};
+  for (auto i : group.layers()) {
+    const auto& e = layers[i].extent;
+    box = {std::min(box.xmin, e.xmin), std::min(box.ymin, e.ymin), std::max(box.xmax, e.xmax), std::max(box.ymax, e.ymax)};
+  }
+  f.x = (box.xmin + box.xmax) / 2, f.y = (box.ymin + box.ymax) / 2;
+  f.profile.shape = ProfileShape::GeneralClosed;
+  f.profile.outline = {{box.xmin, box.ymin}, {box.xmax, box.ymin}, {box.xmax, box.ymax}, {box.xmin, box.ymax}};
+  f.profile.length = std::max(box.width(), box.height());
+  f.profile.width = std::min(box.width(), box.height());
+  f.profile.angle_deg = box.width() >= box.height() ? 0 : 90;
+  f.operations = make_operations(group, layers, f.type);
+  return out;
+}
+
 }  // namespace
 
 PartEnvelope find_part_envelope(const std::vector<MillingGroup>& groups, const setup::Stock& stock,
@@ -323,7 +349,7 @@ PartEnvelope find_part_envelope(const std::vector<MillingGroup>& groups, const s
   std::optional<double> profile_floor;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     if (auto box = groups[g].area.bbox()) part.groups_by_box.insert(g, *box);
-    if (groups[g].freeform) continue;
+    if (groups[g].freeform || groups[g].coarse) continue;
     if (auto inside = surrounded_part(groups[g], stock_rect)) {
       part.outline = part.outline.intersected(*inside);
       part.outside_profiles.push_back(g);
@@ -340,12 +366,15 @@ PartEnvelope find_part_envelope(const std::vector<MillingGroup>& groups, const s
 }
 
 std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const std::vector<MillingGroup>& groups,
-                                                const std::vector<Layer>& layers, const PartEnvelope& part) {
+                                                const std::vector<Layer>& layers, const PartEnvelope& part,
+                                                WorkBudget& budget) {
   const auto& group = groups[group_index];
   ClassifiedFeature out;
   out.order = group.sequence;
   auto& f = out.feature;
   f.bottom_z = group.floor;
+  if (group.coarse) return coarse_feature(group, layers);
+  const WorkCharge charge(budget);
   const bool is_profile = std::find(part.outside_profiles.begin(), part.outside_profiles.end(), group_index) !=
                           part.outside_profiles.end();
   const auto& first_tool = layers[group.operations.front().layers.front()].tool;
@@ -422,8 +451,11 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   const bool all_helical = std::all_of(strategies.begin(), strategies.end(), [](const auto& s) { return s.helical; });
 
   // A helix leaving a core is a hole (CAM does not leave pins standing in a blind hole).
-  auto island = all_circles && all_helical ? std::nullopt
-                                           : standing_island(group_index, groups, layers, part, first_tool.diameter);
+  const bool compare = budget.available();  // with other features, within the work limit
+  if (!compare) f.approximate = true;
+  auto island = (all_circles && all_helical) || !compare
+                    ? std::nullopt
+                    : standing_island(group_index, groups, layers, part, first_tool.diameter);
   if (island) {
     f.type = FeatureType::GeneralOutsideProfile;
     const Ring boss = outer_ring(*island);
@@ -439,7 +471,7 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   auto contact = open_contact(group.area, part);
   // Open also where the cut's outer edge runs into what earlier features cleared deeper (an open
   // pocket on an upper level opening onto a step): a band just inside the edge, in that air.
-  const RemovedBefore removed(group, groups, part);
+  const RemovedBefore removed = compare ? RemovedBefore(group, groups, part) : RemovedBefore();
   if (!removed.empty()) {
     std::vector<Region> outers;
     for (const auto& pwh : group.area.polygons()) outers.push_back(Region::polygon(pwh.outer));

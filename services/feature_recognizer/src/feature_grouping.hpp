@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "cutting_layers.hpp"
+#include "work_budget.hpp"
 
 namespace ncbridge::feature_recognizer {
 
@@ -18,6 +19,7 @@ struct MillingGroup {
   Region filled;      // the same with holes closed
   double floor = 0;   // lowest cutting level
   bool freeform = false;
+  bool coarse = false;  // made of coarse layers (beyond the work limit): one run of one tool
   std::size_t first_workingstep = 0;
   std::size_t sequence = 0;  // of its first pass: machining order among all features
   std::vector<std::size_t> layers() const;
@@ -36,6 +38,9 @@ inline constexpr double kIndexCell = 25.0;
 // random moves overlaps every feature with every other, and comparing all would be quadratic.
 inline constexpr std::size_t kNearFeatureLimit = 16;
 
-std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance);
+// Exact comparisons charge `budget`; past it a layer starts its own group. Coarse layers make
+// one group per run of one tool, one operation per layer.
+std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance, WorkBudget& budget,
+                                       const std::function<void()>& checkpoint = {});
 
 }  // namespace ncbridge::feature_recognizer

@@ -21,6 +21,9 @@ using ClipperLib::Path;
 using ClipperLib::Paths;
 
 constexpr double kScale = 1.0 / kGrid;
+
+// The count region_work() reports (an instrument, read for work limits; no result depends on it).
+thread_local std::uint64_t work_done = 0;
 // Well inside Clipper's full range, so sums and products of two coordinates never overflow.
 constexpr double kLimit = 1e15;
 
@@ -66,7 +69,7 @@ struct Tile {
   Paths paths;  // the region within `box`: outer contours positive, holes negative
 };
 
-std::size_t vertex_count(const Paths& paths) {
+std::size_t count_vertices(const Paths& paths) {
   std::size_t n = 0;
   for (const auto& p : paths) n += p.size();
   return n;
@@ -78,12 +81,13 @@ Paths clip_to(const Paths& paths, const GridBox& box) {
   clipper.AddPath(box.ring(), ClipperLib::ptClip, true);
   Paths out;
   clipper.Execute(ClipperLib::ctIntersection, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  work_done += count_vertices(paths) + 4 + count_vertices(out);
   return out;
 }
 
 void cut_into_tiles(const Paths& paths, const GridBox& box, int depth, std::vector<Tile>& out) {
   const bool splittable = box.xmax - box.xmin >= 2 || box.ymax - box.ymin >= 2;
-  if (vertex_count(paths) <= kTileVertices || depth >= 24 || !splittable) {
+  if (count_vertices(paths) <= kTileVertices || depth >= 24 || !splittable) {
     out.push_back({box, paths});
     return;
   }
@@ -284,7 +288,9 @@ struct Region::Impl {
     clipper.AddPaths(clip, ClipperLib::ptClip, true);
     ClipperLib::PolyTree tree;
     clipper.Execute(type, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    return from_tree(tree);
+    auto impl = from_tree(tree);
+    work_done += count_vertices(subject) + count_vertices(clip) + impl->vertices;
+    return impl;
   }
 
  private:
@@ -434,6 +440,9 @@ Region Region::translated(double dx, double dy) const {
 
 double Region::area() const { return impl_->area; }
 
+std::size_t Region::vertex_count() const { return impl_->vertices; }
+
+
 std::optional<Box2> Region::bbox() const { return impl_->box; }
 
 bool Region::contains(Point2 p) const {
@@ -443,6 +452,7 @@ bool Region::contains(Point2 p) const {
     for (const auto& tile : impl_->tiles()) {
       if (!tile.box.touches({q.X, q.Y, q.X, q.Y})) continue;
       int winding = 0;
+      work_done += count_vertices(tile.paths);
       for (const auto& path : tile.paths) {
         const int side = ClipperLib::PointInPolygon(q, path);
         if (side == -1) return true;  // on the boundary
@@ -453,6 +463,7 @@ bool Region::contains(Point2 p) const {
     return false;
   }
   for (const auto& c : impl_->components) {
+    work_done += c.outer.size();
     if (ClipperLib::PointInPolygon(q, c.outer) == 0) continue;  // outside (1 inside, -1 on it)
     const bool in_hole = std::any_of(c.holes.begin(), c.holes.end(),
                                      [&](const Path& h) { return ClipperLib::PointInPolygon(q, h) == 1; });
@@ -482,6 +493,8 @@ std::vector<PolygonWithHoles> Region::polygons() const {
   }
   return out;
 }
+
+std::uint64_t region_work() { return work_done; }
 
 bool boxes_apart(const std::optional<Box2>& a, const std::optional<Box2>& b) {
   return a && b && (a->xmax < b->xmin || b->xmax < a->xmin || a->ymax < b->ymin || b->ymax < a->ymin);

@@ -4,7 +4,10 @@
 // construct. No G43.1, G96, G64 P, M48-M53, M19, M60, M61, G10 L1, G33, U/V/W, turns of arcs.
 #include "fanuc_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "motion_trace.hpp"
 
 namespace ncbridge::gcode_writer {
 
@@ -85,10 +88,7 @@ void FanucWriter::sync_spindle_mode(const MachineState& d) {
 
 void FanucWriter::sync_control(const MachineState& d) {
   if (d.control == MotionControlMode::ExactStop) cannot("exact stop mode (G61.1)");
-  if (d.control == MotionControlMode::Continuous && (d.tolerance != 0 || d.naive_tolerance != 0)) {
-    cannot("a path blending tolerance (G64 P" + format_number(d.tolerance, style_) + ")");
-  }
-  WordAddressWriter::sync_control(d);
+  sync_control_without_tolerance(d);
 }
 
 void FanucWriter::sync_overrides(const MachineState& d) {
@@ -156,6 +156,110 @@ void FanucWriter::append_cycle_dwell(std::string& s, double seconds) {
   } else {
     cannot("a cycle dwell of " + format_number(seconds, NumberStyle{6, false, false}) + " s", "P counts whole milliseconds");
   }
+}
+
+bool FanucWriter::cycle(const Hole& hole, const MachineState& desired) {
+  if (!is_cycle_motion(cycle_.motion)) fanuc_initial_ = reader_.position.z;
+  const bool oriented = std::any_of(hole.calls.begin(), hole.calls.end(), [](const Call& c) {
+    return std::holds_alternative<OrientSpindle>(c.data);
+  });
+  if (!mach3_ && oriented && (hole.tag.g_code_x10 == 860 || hole.tag.g_code_x10 == 870)) {
+    return fanuc_boring(hole, desired);
+  }
+  return WordAddressWriter::cycle(hole, desired);
+}
+
+bool FanucWriter::fanuc_boring(const Hole& hole, const MachineState& desired) {
+  const CycleTag& t = hole.tag;
+  const bool fine = t.g_code_x10 == 860;  // the front-end tags its G76 as the boring it is, G87 as 870
+  if (incremental_ || t.plane != 0 || reader_.plane != Plane::XY) return false;
+  const double x = length(t.x), y = length(t.y), r = length(t.r), z = length(t.z), q = length(std::fabs(t.q));
+  const double ms = std::round(t.p * 1000.0);
+  if (std::fabs(t.p * 1000.0 - ms) > 1e-6) return false;
+  const double dwell = ms / 1000.0;
+  // the shift at the bottom: fanuc.yaml boring_shift_direction 0, +X (parameter 5101)
+  const double sx = q, sy = 0;
+  MachineState s = reader_;
+  const Direction spindle = s.spindle;
+  if (spindle == Direction::Stopped) return false;
+  std::vector<Data> made;
+  auto move = [&](bool feed, double px, double py, double pz) {
+    Pose to = s.position;
+    to.x = px;
+    to.y = py;
+    to.z = pz;
+    Data d = feed ? Data{StraightFeed{to}} : Data{StraightTraverse{to}};
+    s.apply(d);
+    made.push_back(std::move(d));
+  };
+  auto emit = [&](Data d) {
+    s.apply(d);
+    made.push_back(std::move(d));
+  };
+  auto oriented_stop = [&] {
+    emit(StopSpindleTurning{0});
+    emit(OrientSpindle{0, 0.0, 0});
+  };
+  auto spindle_on = [&] {
+    if (spindle == Direction::Counterclockwise) emit(StartSpindleCounterclockwise{0}); else emit(StartSpindleClockwise{0});
+  };
+  const double initial = fanuc_initial_;
+  if (fine) {
+    if (r < z) return false;
+    const double clear = t.retract_to_r ? r : std::max(initial, r);
+    const Pose at = s.position;
+    if (at.z < r) move(false, at.x, at.y, r);
+    const double level = std::max(at.z, r);
+    move(false, x, y, level);
+    if (level > r) move(false, x, y, r);
+    move(true, x, y, z);
+    if (dwell > 0) emit(Dwell{dwell});
+    oriented_stop();
+    move(false, x + sx, y + sy, z);
+    move(false, x + sx, y + sy, clear);
+    move(false, x, y, clear);
+    spindle_on();
+  } else {
+    const double level = s.position.z;
+    if (r > z || initial < z || level < z) return false;
+    move(false, x, y, level);
+    oriented_stop();
+    move(false, x + sx, y + sy, level);
+    move(false, x + sx, y + sy, r);
+    move(false, x, y, r);
+    spindle_on();
+    move(true, x, y, z);
+    if (dwell > 0) emit(Dwell{dwell});
+    oriented_stop();
+    move(false, x + sx, y + sy, z);
+    move(false, x + sx, y + sy, initial);
+    move(false, x, y, initial);
+    spindle_on();
+  }
+  std::vector<Data> source;
+  for (const Call& c : hole.calls) source.push_back(c.data);
+  if (!same_motion(desired, source, reader_, made, reader_.units == Units::Inches ? 1e-5 : 1e-4)) return false;
+  if (fine && (cycle_.retract_to_r != t.retract_to_r || !retract_written_)) {
+    put(Slot::Retract) += t.retract_to_r ? "G99" : "G98";
+    cycle_.retract_to_r = t.retract_to_r;
+    retract_written_ = true;
+  }
+  std::string& b = put(Slot::Motion);
+  b += fine ? "G76 " : "G87 ";
+  append(b, 'X', x);
+  b.push_back(' ');
+  append(b, 'Y', y);
+  b.push_back(' ');
+  append(b, 'Z', z);
+  b.push_back(' ');
+  append(b, 'R', r);
+  b.push_back(' ');
+  append(b, 'Q', q);
+  append_int(b, " P", static_cast<long long>(ms));
+  flush();
+  reader_ = s;
+  note_other_motion(cycle_, fine ? 761 : 871);  // the front-end stays in the cycle; the executor ran moves
+  return true;
 }
 
 void FanucWriter::write_repeat_begin(std::uint32_t count) {

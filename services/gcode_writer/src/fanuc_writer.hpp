@@ -30,6 +30,11 @@ class FanucWriter : public WordAddressWriter {
   bool axis_supported(char letter) const override;
   void write_other_action(const canonical::Call& call, const MachineState& desired) override;
   bool has_cycle(int motion) const override;
+  bool cycle(const Hole& hole, const MachineState& desired) override;
+  // Fanuc's G76 (fine boring) and G87 (back boring), which its front-end spells as moves with an
+  // oriented spindle stop (services/interpreter/src/fanuc/boring_cycles.cpp)
+  bool fanuc_boring(const Hole& hole, const MachineState& desired);
+  double fanuc_initial_ = 0;  // the front-end's initial level (set entering a run of cycles)
   bool reads_cycle_dwell(int motion) const override;
   void append_cycle_dwell(std::string& s, double seconds) override;
   void write_repeat_begin(std::uint32_t count) override;

@@ -182,6 +182,7 @@ class HeidenhainWriter final : public DialectWriter {
   // the cycle defined last (CYCL DEF and its Q parameters), to call it again
   std::string cycle_definition_;
   double wanted_feed_ = 0;  // the feed the next feed move needs (set by sync)
+  bool said_dropped_ = false;
   std::vector<std::string> held_comments_;  // comments that came after a tool change not yet written
 };
 
@@ -262,7 +263,15 @@ void HeidenhainWriter::sync(const MachineState& d, unsigned need) {
   }
   if ((need & kPath) != 0 && (d.control != reader_.control || d.tolerance != reader_.tolerance ||
                               d.naive_tolerance != reader_.naive_tolerance)) {
-    cannot("a path control mode (G61, G61.1, G64 P)");
+    const bool only_tolerance = d.control == MotionControlMode::Continuous && reader_.control == d.control;
+    if (!only_tolerance) cannot("a path control mode (G61, G61.1)");
+    if (!options_.drop_path_tolerance) {
+      cannot("a path blending tolerance (G64 P)", "the TNC's contouring has none (--drop-path-tolerance writes it without)");
+    }
+    if (!said_dropped_) {
+      comment("ncbridge: G64 P (LinuxCNC's path tolerance) not written: the control blends by its own settings");
+      said_dropped_ = true;
+    }
   }
   if ((need & kActuators) != 0) {
     if (!near(reader_.css_maximum, d.css_maximum, 1e-9)) cannot("constant surface speed (G96/G97)");

@@ -69,20 +69,24 @@ void MachineState::apply(const Data& data) {
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, UseLengthUnits>) {
           if (d.units != units) {
+            ++frame_generation;
             const double k = d.units == Units::Millimeters ? 25.4 : 1.0 / 25.4;
             for (auto f : kLinear) position.*f *= k;
             units = d.units;
           }
         } else if constexpr (std::is_same_v<T, SetG5xOffset>) {
+          ++frame_generation;
           const Pose old = origin_mm();
           coord_system = d.index >= 1 && d.index <= 9 ? d.index : 1;
           g5x_mm[static_cast<std::size_t>(coord_system)] = to_mm(d.offset, mm_per_unit());
           shift(position, old, origin_mm(), mm_per_unit());
         } else if constexpr (std::is_same_v<T, SetG92Offset>) {
+          ++frame_generation;
           const Pose old = origin_mm();
           g92_mm = to_mm(d.offset, mm_per_unit());
           shift(position, old, origin_mm(), mm_per_unit());
         } else if constexpr (std::is_same_v<T, SetXyRotation>) {
+          ++frame_generation;
           rotation[static_cast<std::size_t>(coord_system)] = d.degrees;
         } else if constexpr (std::is_same_v<T, SelectPlane>) {
           plane = d.plane;
@@ -119,6 +123,7 @@ void MachineState::apply(const Data& data) {
         } else if constexpr (std::is_same_v<T, SetSpindleMode>) {
           css_maximum = d.css_maximum;
         } else if constexpr (std::is_same_v<T, UseToolLengthOffset>) {
+          ++frame_generation;
           const Pose now = to_mm(d.offset, mm_per_unit());
           shift(position, tool_offset_mm, now, mm_per_unit());
           tool_offset_mm = now;

@@ -38,6 +38,9 @@ struct MachineState {
   bool synch = false;          // START_SPEED_FEED_SYNCH ... STOP
   double synch_feed_per_revolution = 0;
   bool synch_velocity = false;
+  // Counts the changes of units, offsets, rotation and tool length offset: a writer whose
+  // frame it has brought to this state needs not compare them again until it moves on.
+  std::uint64_t frame_generation = 0;
 
   double mm_per_unit() const { return units == canonical::Units::Inches ? 25.4 : 1.0; }
   canonical::Pose origin_mm() const;  // G5x of the active system + G92

@@ -16,14 +16,21 @@ int clamp_decimals(int d) { return d < 0 ? 0 : d > 9 ? 9 : d; }
 }  // namespace
 
 double rounded(double value, int decimals) {
+  if (value == 0) return 0.0;
   const double p = kPowers[clamp_decimals(decimals)];
   const double scaled = value * p;
   if (!(std::fabs(scaled) < kLargest)) return value;
-  const double r = static_cast<double>(std::llround(scaled)) / p;
+  const double r = static_cast<double>(static_cast<long long>(scaled + (scaled < 0 ? -0.5 : 0.5))) / p;
   return r == 0 ? 0.0 : r;  // no -0
 }
 
 void append_number(std::string& out, double value, const NumberStyle& style) {
+  if (value == 0) {
+    if (style.plus_sign) out.push_back('+');
+    out.push_back('0');
+    if (style.point_always) out.push_back('.');
+    return;
+  }
   const int d = clamp_decimals(style.decimals);
   const double scaled = value * kPowers[d];
   if (!(std::fabs(scaled) < kLargest)) {
@@ -34,7 +41,7 @@ void append_number(std::string& out, double value, const NumberStyle& style) {
     out += buffer;
     return;
   }
-  long long n = std::llround(scaled);
+  long long n = static_cast<long long>(scaled + (scaled < 0 ? -0.5 : 0.5));
   const bool negative = n < 0;
   if (negative) n = -n;
   unsigned long long unit = 1;

@@ -39,7 +39,11 @@ std::string cycle_name(int g_code_x10) {
     case 870: return "G87 (back boring)";
     case 880: return "G88 (boring, manual out)";
     case 890: return "G89 (boring, dwell, feed out)";
-    default: return "G" + std::to_string(g_code_x10 / 10);
+    default: {
+      std::string g(1, 'G');
+      g += std::to_string(g_code_x10 / 10);
+      return g;
+    }
   }
 }
 
@@ -81,9 +85,13 @@ struct ProgramWriter::Impl {
   }
 
   void locate(const Source& source) {
-    where.file = source.file < files.size() ? files[source.file] : std::string();
+    if (source.file != located_file) {
+      where.file = source.file < files.size() ? files[source.file] : std::string();
+      located_file = source.file;
+    }
     where.line = source.line;
   }
+  std::uint32_t located_file = ~0u;
 
   void start() {
     if (started) return;
@@ -230,6 +238,10 @@ struct ProgramWriter::Impl {
       } else if constexpr (std::is_same_v<T, ArcFeed>) {
         sync(kFeedMotion | kPlane);
         if ((d.rotation > 1 || d.rotation < -1) && !dialect->arcs_turn_more_than_once()) {
+          if (d.rotation > 10000 || d.rotation < -10000) {
+            refuse(std::string(dialect_name(options.dialect)) + " cannot express an arc of more than 10000 turns " +
+                   "(its arcs turn at most once: one block a turn)");
+          }
           if (options.comments != Comments::None) {
             dialect->comment("ncbridge: an arc of " + std::to_string(d.rotation < 0 ? -d.rotation : d.rotation) +
                              " turns, written one turn a block");
@@ -291,6 +303,7 @@ ProgramWriter::~ProgramWriter() = default;
 void ProgramWriter::source_file(std::uint32_t index, std::string_view path) {
   if (impl_->files.size() <= index) impl_->files.resize(index + 1);
   impl_->files[index] = std::string(path);
+  impl_->located_file = ~0u;
 }
 
 void ProgramWriter::call(const Call& call) { impl_->call(call); }

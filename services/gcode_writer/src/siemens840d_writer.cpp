@@ -88,15 +88,13 @@ class Siemens840dWriter final : public WordAddressWriter {
   void sync_spindle_mode(const MachineState& d) override {
     if (!near(reader_.css_maximum, d.css_maximum, 1e-9)) cannot("constant surface speed (G96/G97)");
   }
-  void sync_control(const MachineState& d) override {
-    if (d.control == MotionControlMode::ExactStop) cannot("exact stop mode (G61.1)");
-    if (d.control == MotionControlMode::Continuous && (d.tolerance != 0 || d.naive_tolerance != 0)) {
-      cannot("a path blending tolerance (G64 P" + format_number(d.tolerance, style_) + ")");
-    }
-    if (reader_.control == d.control) return;
-    put(Slot::Control) += d.control == MotionControlMode::ExactPath ? "G60" : "G64";
-    reader_.apply(SetMotionControlMode{d.control, 0});
-    if (d.control == MotionControlMode::Continuous) reader_.apply(SetNaivecamTolerance{0});
+  void sync_control(const MachineState& desired) override {
+    if (desired.control == MotionControlMode::ExactStop) cannot("exact stop mode (G61.1)");
+    sync_control_without_tolerance(desired);
+  }
+  // G60 (exact stop, modal) is the executor's exact path; G64 its continuous mode.
+  std::string_view control_word(MotionControlMode mode) const override {
+    return mode == MotionControlMode::ExactPath ? "G60" : "G64";
   }
   void sync_overrides(const MachineState& d) override {
     if (reader_.feed_override != d.feed_override || reader_.speed_override != d.speed_override ||
@@ -230,7 +228,7 @@ bool Siemens840dWriter::cycle(const Hole& hole, const MachineState& desired) {
   n.decimals = length_decimals();
   args[0] = format_number(rtp, n);
   args[1] = format_number(r, n);
-  args[2] = "0";
+  args[2].assign(1, '0');
   args[3] = format_number(z, n);
   auto set = [&](std::size_t index, std::string value) {
     if (args.size() <= index) args.resize(index + 1);

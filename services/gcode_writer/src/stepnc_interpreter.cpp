@@ -278,13 +278,6 @@ class Interpreter {
   }
 
   // ---- elements
-  // WORKPIECE_PROBING (G38.2/G38.3 in the CC1 model since 2facbe5) is not written yet: refused by
-  // name until the writer learns it (main did not build without an overload here).
-  void element(const sn::WorkpieceProbing& p, std::size_t) {
-    name("workpiece probing", p.its_id);
-    fail("WORKPIECE_PROBING (touch probing) is not written as a program yet");
-  }
-
   void element(const sn::RapidMovement& r, std::size_t index) {
     name("rapid movement", r.its_id);
     // Two rapid movements in a row were split by a tool change (docs/cc1.md): the first moves
@@ -297,6 +290,23 @@ class Interpreter {
       for (const auto& t : r.its_toolpath->its_list) curve(t.basiccurve, Frame{}, true, security_z);
     }
     if (split) prepare_for_next_workingstep(index, true);
+  }
+
+  // A WORKPIECE_PROBING (docs/cc1.md): the probe moves from its start along its direction until
+  // it touches, expected within expected_value of the start; as G38.2 to the end of the range
+  // (theoretical size + upper limit), at the feed in effect.
+  void element(const sn::WorkpieceProbing& w, std::size_t) {
+    name("workpiece probing", w.its_id);
+    const double reach = w.expected_value.theoretical_size + w.expected_value.upper_limit;
+    const sn::Direction& d = w.its_direction;
+    const double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    if (!(reach > 0) || !(length > 0)) fail("a workpiece probing with no travel (expected_value and its_direction)");
+    if (state_.feed_mm <= 0) fail("a workpiece probing with no feed rate before it");
+    const sn::CartesianPoint& s = w.start_position.location;
+    go_to(pose(Frame{}.point(s)), w.its_secplane.position.location.z, true);
+    const sn::CartesianPoint end{s.x + d.x / length * reach, s.y + d.y / length * reach, s.z + d.z / length * reach};
+    emit(StraightProbe{pose(Frame{}.point(end)), 0});
+    position_known_ = true;  // as the CC1 builder reads a probe move: the path goes on from its end
   }
 
   // The tool, spindle and coolant of the cut an approach leads to are there before it (the
@@ -402,6 +412,7 @@ class Interpreter {
     } else if constexpr (std::is_same_v<Op, sn::MultistepDrilling>) {
       q = op.depth_of_step > 0 ? op.depth_of_step : op.first_depth;
       if (q <= 0) fail("MULTISTEP_DRILLING without a depth of step");
+      if (!(depth / q <= 1e5)) fail("MULTISTEP_DRILLING of more than 100000 steps");
       const double rapid_delta = 0.254;  // the executor's G73 retract, mm
       g = op.retract_distance > 0 && op.retract_distance < q - 1e-6 && std::fabs(op.retract_distance - rapid_delta) < 0.05 ? 730 : 830;
     } else if constexpr (std::is_same_v<Op, sn::Tapping>) {

@@ -232,9 +232,12 @@ void WordAddressWriter::sync(const MachineState& d, unsigned need) {
     flush();
     reader_.apply(UseLengthUnits{d.units});
   }
-  if ((need & kFrame) != 0) {
+  if ((need & kFrame) != 0 &&
+      (d.frame_generation != synced_desired_frame_ || reader_.frame_generation != synced_reader_frame_)) {
     sync_offsets(d);
     sync_tool_length(d);
+    synced_desired_frame_ = d.frame_generation;
+    synced_reader_frame_ = reader_.frame_generation;
   }
   if ((need & kFeed) != 0) {
     if (reader_.feed_reference != d.feed_reference) cannot("SET_FEED_REFERENCE(CANON_WORKPIECE)", "feeds are along the tool path");
@@ -421,24 +424,32 @@ void WordAddressWriter::sync_spindle_mode(const MachineState& d) {
   reader_.apply(SetSpindleMode{0, d.css_maximum});
 }
 
+std::string_view WordAddressWriter::control_word(MotionControlMode mode) const {
+  return mode == MotionControlMode::ExactPath ? "G61" : mode == MotionControlMode::ExactStop ? "G61.1" : "G64";
+}
+
 void WordAddressWriter::sync_control(const MachineState& d) {
-  const bool same_mode = reader_.control == d.control;
-  const bool same_tolerance = d.control != MotionControlMode::Continuous ||
-                              (near(reader_.tolerance, d.tolerance, 1e-9) && near(reader_.naive_tolerance, d.naive_tolerance, 1e-9));
+  sync_control_mode(d.control, d.tolerance, d.naive_tolerance);
+}
+
+void WordAddressWriter::sync_control_mode(MotionControlMode mode, double tolerance, double naive) {
+  const bool same_mode = reader_.control == mode;
+  const bool same_tolerance = mode != MotionControlMode::Continuous ||
+                              (near(reader_.tolerance, tolerance, 1e-9) && near(reader_.naive_tolerance, naive, 1e-9));
   if (same_mode && same_tolerance) return;
   std::string& s = put(Slot::Control);
-  switch (d.control) {
+  switch (mode) {
     case MotionControlMode::ExactPath:
-      s += "G61";
+      s += control_word(mode);
       reader_.apply(SetMotionControlMode{MotionControlMode::ExactPath, 0});
       return;
     case MotionControlMode::ExactStop:
-      s += "G61.1";
+      s += control_word(mode);
       reader_.apply(SetMotionControlMode{MotionControlMode::ExactStop, 0});
       return;
     case MotionControlMode::Continuous: {
-      s += "G64";
-      const double p = length(d.tolerance), q = length(d.naive_tolerance);
+      s += control_word(mode);
+      const double p = length(tolerance), q = length(naive);
       if (p != 0 || q != 0) {
         s.push_back(' ');
         append(s, 'P', p);
@@ -452,6 +463,23 @@ void WordAddressWriter::sync_control(const MachineState& d) {
       return;
     }
   }
+}
+
+void WordAddressWriter::sync_control_without_tolerance(const MachineState& d) {
+  if (d.control != MotionControlMode::Continuous || (d.tolerance == 0 && d.naive_tolerance == 0)) {
+    sync_control_mode(d.control, 0, 0);
+    return;
+  }
+  if (!options_.drop_path_tolerance) {
+    cannot(concat({"a path blending tolerance (G64 P", format_number(d.tolerance, style_), ")"}),
+           "its continuous mode has none (--drop-path-tolerance writes it without)");
+  }
+  if (!said_dropped_ && options_.comments != Comments::None) {
+    write_comment_line(concat({"ncbridge: G64 P", format_number(d.tolerance, style_),
+                               " (LinuxCNC's path tolerance) written as G64: the control blends by its own settings"}));
+    said_dropped_ = true;
+  }
+  sync_control_mode(MotionControlMode::Continuous, 0, 0);
 }
 
 void WordAddressWriter::sync_overrides(const MachineState& d) {

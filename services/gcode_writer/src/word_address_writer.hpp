@@ -87,7 +87,10 @@ class WordAddressWriter : public DialectWriter {
   canonical::Pose rounded_pose(const canonical::Pose& pose) const;
 
   [[noreturn]] void cannot(const std::string& construct, const std::string& why = {}) const { refuse(construct, why); }
-  bool is_cycle_motion(int motion) const { return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890); }
+  // (761 and 871: Fanuc's G76 and G87, which its front-end spells as moves)
+  bool is_cycle_motion(int motion) const {
+    return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890) || motion == 761 || motion == 871;
+  }
   void leave_cycles();
   void axis_words(std::string& s, const canonical::Pose& end, bool always_one);
   void motion_word(std::string& s, int motion);  // G0/G1/G2/G3 when the reader is not in it
@@ -106,6 +109,12 @@ class WordAddressWriter : public DialectWriter {
   virtual void sync_tool_length(const MachineState& desired);
   virtual void sync_spindle_mode(const MachineState& desired);
   virtual void sync_control(const MachineState& desired);
+  void sync_control_mode(canonical::MotionControlMode mode, double tolerance, double naive);
+  virtual std::string_view control_word(canonical::MotionControlMode mode) const;
+  // For a dialect without G64 P: the mode without the tolerance when Options::drop_path_tolerance
+  // allows it (said once in a comment), else a refusal.
+  void sync_control_without_tolerance(const MachineState& desired);
+  bool said_dropped_ = false;
   virtual void sync_overrides(const MachineState& desired);
   virtual void write_dwell(double seconds);
   virtual void write_turns(std::string& s, int turns);  // an arc of more than one turn
@@ -123,6 +132,8 @@ class WordAddressWriter : public DialectWriter {
 
   // tool offsets (mm) of the reader's tool table: the tool list, then what G10 L1 wrote
   std::map<int, canonical::Pose> tool_offsets_mm_;
+  // the frame generations (MachineState::frame_generation) of the last frame sync
+  std::uint64_t synced_desired_frame_ = ~0ull, synced_reader_frame_ = ~0ull;
   const canonical::Pose* tool_offset_of(int tool) const;
   int tool_with_offset(const canonical::Pose& offset_mm, int prefer) const;
 

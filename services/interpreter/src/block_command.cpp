@@ -59,6 +59,8 @@ void BlockCommand::reset() {
   present = 0;
   g.fill(-1);
   m.fill(-1);
+  g_column.fill(0);  // a modal code has no column in this block: errors then name the block's first
+  m_column.fill(0);
   mist_on = flood_on = false;
   has_polar_radius = has_polar_angle = false;
   comment = {};

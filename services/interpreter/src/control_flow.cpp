@@ -22,8 +22,9 @@ ControlFlowRunner::ControlFlowRunner(const Options& options, Sink& sink)
   params_.set_computed(&executor_);
 }
 
+// Every error names a line and a column: before the first line (an empty file) it is line 1.
 void ControlFlowRunner::fail(std::uint32_t column, const std::string& message) const {
-  throw InputError({file_name(), line_, column}, message);
+  throw InputError({file_name(), line_ == 0 ? 1 : line_, column == 0 ? 1 : column}, message);
 }
 
 double ControlFlowRunner::eval(ExprRef ref) const { return evaluate(block_, ref, params_, file_name()); }
@@ -58,7 +59,7 @@ void ControlFlowRunner::seek(std::uint32_t file, std::uint64_t offset, std::uint
   current_file_ = file;
   if (!files_[file].source) {
     files_[file].source = open_text_file(files_[file].name);
-    if (!files_[file].source) fail(0, "Unable to reopen file " + files_[file].name);
+    if (!files_[file].source) fail(call_column_, "Unable to reopen file " + files_[file].name);
   }
   files_[file].source->seek(offset);
   line_ = line_before;
@@ -87,7 +88,7 @@ void ControlFlowRunner::run(std::unique_ptr<TextSource> source, const std::strin
   for (;;) {
     if (!read_line(false)) {
       executor_.end_of_file();
-      if (!frames_.empty()) fail(0, "File ended inside subroutine (missing endsub)");
+      if (!frames_.empty()) fail(1, "File ended inside subroutine (missing endsub)");
       if (options_.require_program_end || options_.strict) {
         throw InputError({file_name(), line_, 1}, "File ended with no percent sign or program end");
       }
@@ -399,7 +400,7 @@ void ControlFlowRunner::call(const std::string& label) {
     if (!skip_to(label, bit(StatementKind::Sub))) {
       current_file_ = caller_file;
       line_ = caller_line;
-      fail(0, "Subroutine file " + candidate.string() + " does not define o<" + label + "> sub");
+      fail(call_column_, "Subroutine file " + candidate.string() + " does not define o<" + label + "> sub");
     }
     subs_[label] = SubDefinition{current_file_, next_offset_, line_};
     return;

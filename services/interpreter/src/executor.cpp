@@ -21,8 +21,9 @@ Executor::Executor(const Options& options, Parameters& parameters, Sink& sink)
 
 Executor::~Executor() = default;
 
+// Every error names a line and a column; where no word is to blame, the block's first column.
 void Executor::fail(std::uint32_t column, const std::string& message) const {
-  throw InputError({file_ ? *file_ : std::string(), line_, column}, message);
+  throw InputError({file_ ? *file_ : std::string(), line_ == 0 ? 1 : line_, column == 0 ? 1 : column}, message);
 }
 
 void Executor::warn(std::uint32_t column, const std::string& message) const {
@@ -162,11 +163,11 @@ bool Executor::execute(const BlockCommand& b, const Source& source, const std::s
   // STEP 4: G codes
   int g0 = b.g[kGNonModal];
   if (g0 == 40) do_dwell(b);
-  if (b.g[kGPlane] != -1) do_plane(b.g[kGPlane]);
+  if (b.g[kGPlane] != -1) do_plane(b, b.g[kGPlane]);
   if (b.g[kGUnits] != -1) do_units(b.g[kGUnits]);
   if (b.g[kGCutterComp] != -1) do_cutter_comp(b, b.g[kGCutterComp]);
   if (b.g[kGToolLength] != -1) do_tool_length_offset(b, b.g[kGToolLength]);
-  if (b.g[kGCoordSystem] != -1) do_coordinate_system(b.g[kGCoordSystem]);
+  if (b.g[kGCoordSystem] != -1) do_coordinate_system(b.g[kGCoordSystem], b.g_column[kGCoordSystem]);
   if (b.g[kGControl] != -1) do_control_mode(b, b.g[kGControl]);
   if (b.g[kGDistance] != -1) do_distance_mode(b.g[kGDistance]);
   if (b.g[kGArcDistance] != -1) do_distance_mode(b.g[kGArcDistance]);
@@ -298,11 +299,11 @@ void Executor::do_dwell(const BlockCommand& b) {
   emit(Dwell{p});
 }
 
-void Executor::do_plane(int g) {
+void Executor::do_plane(const BlockCommand& b, int g) {
   Plane p = g == 170 ? Plane::XY : g == 180 ? Plane::XZ : g == 190 ? Plane::YZ
           : g == 171 ? Plane::UV : g == 181 ? Plane::UW : Plane::VW;
   if (s_.comp_side != Side::Off && p != s_.plane) {
-    fail(0, "Cannot change planes with cutter radius compensation on");
+    fail(b.g_column[kGPlane], "Cannot change planes with cutter radius compensation on");
   }
   s_.plane = p;
   emit(SelectPlane{p});

@@ -73,7 +73,7 @@ class Executor final : public ComputedParameters {
   void do_feed_rate(const BlockCommand& b);
   void do_speed(const BlockCommand& b);
   void do_dwell(const BlockCommand& b);
-  void do_plane(int g);
+  void do_plane(const BlockCommand& b, int g);
   void do_units(int g);
   void do_control_mode(const BlockCommand& b, int g);
   void do_distance_mode(int g);
@@ -102,7 +102,7 @@ class Executor final : public ComputedParameters {
   const ToolEntry* tool_entry(int number) const { return number == 0 ? nullptr : tools_.find(number); }
 
   // offsets.cpp
-  void do_coordinate_system(int g);
+  void do_coordinate_system(int g, std::uint32_t column);
   void do_g10(const BlockCommand& b);
   void do_g10_tool(const BlockCommand& b, int l);
   void do_home(const BlockCommand& b, int g);

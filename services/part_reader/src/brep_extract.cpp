@@ -4,13 +4,11 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
-#include <BRepGProp.hxx>
 #include <BRepGProp_Face.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
-#include <GProp_GProps.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
@@ -30,6 +28,7 @@
 #include <gp_Trsf.hxx>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -183,7 +182,8 @@ Surface surface_of(const TopoDS_Face& face, const BRepAdaptor_Surface& s) {
 
 }  // namespace
 
-Model load_step(const std::filesystem::path& path, const SetupFrame& frame) {
+Model load_step(const std::filesystem::path& path, const SetupFrame& frame, double* occt_ms) {
+  const auto start = std::chrono::steady_clock::now();
   STEPControl_Reader reader = open(path);
   Model model;
   {
@@ -206,6 +206,7 @@ Model load_step(const std::filesystem::path& path, const SetupFrame& frame) {
   gp_Trsf trsf;
   trsf.SetValues(r[0], r[1], r[2], t[0], r[3], r[4], r[5], t[1], r[6], r[7], r[8], t[2]);
   const TopoDS_Shape solid = BRepBuilderAPI_Transform(solids(1), trsf, true).Shape();
+  if (occt_ms) *occt_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
   TopTools_IndexedMapOfShape faces, edges;
   TopExp::MapShapes(solid, TopAbs_FACE, faces);
@@ -231,9 +232,6 @@ Model load_step(const std::filesystem::path& path, const SetupFrame& frame) {
     f.index = i;
     BRepAdaptor_Surface adaptor(face, true);
     f.surface = surface_of(face, adaptor);
-    GProp_GProps props;
-    BRepGProp::SurfaceProperties(face, props);
-    f.area = props.Mass();
     const TopoDS_Wire outer = BRepTools::OuterWire(face);
     for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
       const TopoDS_Wire wire = TopoDS::Wire(w.Current());

@@ -11,7 +11,8 @@
 namespace ncbridge::part_reader::brep {
 
 // Throws InputError: not a STEP file Open CASCADE can read, no solid, several solids.
-Model load_step(const std::filesystem::path& path, const SetupFrame& frame);
+// `occt_ms` (when given) gets the time Open CASCADE took to read the file into the turned solid.
+Model load_step(const std::filesystem::path& path, const SetupFrame& frame, double* occt_ms = nullptr);
 
 // The axis-aligned box of the solid(s) of a STEP file (for --stock-step), in its own frame.
 Box step_box(const std::filesystem::path& path);

@@ -59,7 +59,6 @@ struct Face {
   Surface surface;
   std::vector<Loop> loops;  // outer first
   Vec3 box_min, box_max;
-  double area = 0;
   double angle_span = 0;  // cylinders and cones: the angle the face covers about the axis (radians)
   double axis_min = 0, axis_max = 0;  // cylinders and cones: the face's extent along the axis, from `origin`
 };

@@ -1,5 +1,6 @@
 #include "ncbridge/part_reader/brep_reader.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 
@@ -55,15 +56,24 @@ std::string format_of(const std::string& schema) {
 
 }  // namespace
 
-Part read_brep_file(const std::filesystem::path& path, const ReadOptions& options) {
+Part read_brep_file(const std::filesystem::path& path, const ReadOptions& options, BrepTimings* timings) {
+  using Clock = std::chrono::steady_clock;
   const SetupFrame frame(options);
-  const brep::Model model = brep::load_step(path, frame);
+  const auto t0 = Clock::now();
+  double occt_ms = 0;
+  const brep::Model model = brep::load_step(path, frame, &occt_ms);
+  const auto t1 = Clock::now();
   brep::Recognized r;
   r.used.assign(model.faces.size(), 0);
   brep::recognize_footprint(model, r);
   brep::recognize_holes(model, r);
   brep::recognize_floors(model, r);
   brep::report_other_faces(model, r);
+  if (timings) {
+    timings->occt_ms = occt_ms;
+    timings->model_ms = std::chrono::duration<double, std::milli>(t1 - t0).count() - occt_ms;
+    timings->recognition_ms = std::chrono::duration<double, std::milli>(Clock::now() - t1).count();
+  }
 
   Part part;
   part.file = path.string();

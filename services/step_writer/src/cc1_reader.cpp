@@ -27,7 +27,7 @@ class Cc1Reader {
 
   StepncReadResult read() {
     const auto projects = g_.ids_of("PROJECT");
-    if (projects.empty()) throw InputError({file_, 0, 0}, "no PROJECT instance: not an ISO 14649 program");
+    if (projects.empty()) throw InputError({file_, 1, 1}, "no PROJECT instance: not an ISO 14649 program");
     const Instance& project = instance(projects.front());
     if (projects.size() > 1) warn(project, "more than one PROJECT: reading the first");
     auto& p = result_.project;
@@ -42,7 +42,7 @@ class Cc1Reader {
     const Instance& workplan = expect(reference(project, 1), {"WORKPLAN"}, project);
     p.main_workplan.its_id = text(workplan, 0);
     if (!attr(workplan, 3).is_unset()) p.setup = setup(expect(attr(workplan, 3).as_reference(), {"SETUP"}, workplan));
-    for (const Value& v : list(workplan, 1)) executable(instance(reference_in(v, workplan)));
+    for (const Value& v : list(workplan, 1)) executable(instance(reference_in(v, workplan), &workplan));
     return std::move(result_);
   }
 
@@ -60,9 +60,15 @@ class Cc1Reader {
     d.message = std::move(message);
     result_.warnings.push_back(std::move(d));
   }
-  const Instance& instance(InstanceId id) const {
+  // The instance `id`; a reference to one the file lacks is an error where the referring
+  // instance (`from`) is.
+  const Instance& instance(InstanceId id, const Instance* from = nullptr) const {
     const Instance* i = g_.find(id);
-    if (!i || i->records.empty()) throw InputError({file_, 0, 0}, "reference to #" + std::to_string(id) + ", which the file does not define");
+    if (!i || i->records.empty()) {
+      const std::string message = "reference to #" + std::to_string(id) + ", which the file does not define";
+      if (from) fail_complex(*from, message);
+      throw InputError({file_, 1, 1}, message);
+    }
     return *i;
   }
   const Value& attr(const Instance& i, std::size_t n) const {
@@ -106,7 +112,7 @@ class Cc1Reader {
     return v.as_list();
   }
   const Instance& expect(InstanceId id, std::initializer_list<std::string_view> entities, const Instance& from) const {
-    const Instance& i = instance(id);
+    const Instance& i = instance(id, &from);
     for (auto e : entities) {
       if (!i.complex && i.entity() == e) return i;
     }
@@ -229,7 +235,9 @@ class Cc1Reader {
     }
     constexpr double kChordTolerance = 0.001;  // mm
     const double step = 2 * std::acos(std::max(-1.0, 1 - kChordTolerance / radius));
-    const auto pieces = static_cast<std::size_t>(std::max(1.0, std::ceil(std::fabs(sweep) / step)));
+    const double count = std::max(1.0, std::ceil(std::fabs(sweep) / step));
+    if (!(count <= 1e6)) fail(i, "a helix of more than a million chords of 0.001 mm");
+    const auto pieces = static_cast<std::size_t>(count);
     sn::Polyline l;
     l.points.push_back(*t1.point);
     for (std::size_t k = 1; k < pieces; ++k) {
@@ -325,7 +333,7 @@ class Cc1Reader {
   // A curve of a toolpath: a B-spline (NURBS) curve, a POLYLINE, a TRIMMED_CURVE, or a
   // COMPOSITE_CURVE of them.
   sn::CompositeCurve curve(InstanceId id, const Instance& from) const {
-    const Instance& i = instance(id);
+    const Instance& i = instance(id, &from);
     sn::CompositeCurve c;
     if (is_bspline(i)) {
       c.segments.emplace_back(bspline(i));
@@ -362,7 +370,7 @@ class Cc1Reader {
     if (t.its_id.size() > 1 && t.its_id[0] == 'T' && std::isdigit(static_cast<unsigned char>(t.its_id[1]))) {
       t.number = std::atoi(t.its_id.c_str() + 1);
     }
-    const Instance& body = instance(reference(i, 1));
+    const Instance& body = instance(reference(i, 1), &i);
     static const std::map<std::string, sn::ToolBody, std::less<>> kBodies{
         {"FACEMILL", sn::ToolBody::Facemill}, {"ENDMILL", sn::ToolBody::Endmill},
         {"TAPERED_ENDMILL", sn::ToolBody::Endmill}, {"BALL_ENDMILL", sn::ToolBody::BallEndmill},
@@ -509,7 +517,7 @@ class Cc1Reader {
     Op op;
     machining_operation(i, op);
     if (!attr(i, 9).is_unset() || !attr(i, 10).is_unset()) warn(i, "approach/retract strategies are not kept");
-    if (!attr(i, 11).is_unset()) op.its_machining_strategy = strategy(instance(reference(i, 11)));
+    if (!attr(i, 11).is_unset()) op.its_machining_strategy = strategy(instance(reference(i, 11), &i));
     std::size_t n = 12;
     op.axial_cutting_depth = opt_number(i, n++);
     if (side) {
@@ -548,7 +556,7 @@ class Cc1Reader {
 
   std::optional<sn::OperationRef> operation(InstanceId id, const Instance& from) {
     if (auto it = operations_.find(id); it != operations_.end()) return it->second;
-    const Instance& i = instance(id);
+    const Instance& i = instance(id, &from);
     const std::string& e = i.entity();
     sn::Operation op;
     if (e == "FREEFORM_OPERATION") {
@@ -606,7 +614,7 @@ class Cc1Reader {
     const Instance& d = expect(id, {"TOLERANCED_LENGTH_MEASURE"}, from);
     sn::TolerancedLengthMeasure t;
     t.theoretical_size = number(d, 0);
-    const Instance& tol = instance(reference(d, 1));
+    const Instance& tol = instance(reference(d, 1), &d);
     if (tol.entity() == "PLUS_MINUS_VALUE") {
       t.upper_limit = number(tol, 0);
       t.lower_limit = number(tol, 1);
@@ -645,7 +653,7 @@ class Cc1Reader {
   void pocket(const Instance& i, Pocket& p) {
     if (!list(i, 5).empty()) warn(i, "bosses are not kept");
     p.slope = opt_number(i, 6);
-    const Instance& bottom = instance(reference(i, 7));
+    const Instance& bottom = instance(reference(i, 7), &i);
     if (bottom.entity() == "THROUGH_POCKET_BOTTOM_CONDITION") p.bottom_condition = sn::ThroughPocketBottomCondition{};
     else if (bottom.entity() == "PLANAR_POCKET_BOTTOM_CONDITION") p.bottom_condition = sn::PlanarPocketBottomCondition{};
     else warn(bottom, "pocket bottom " + bottom.entity() + " read as planar");
@@ -655,7 +663,7 @@ class Cc1Reader {
 
   std::optional<sn::FeatureRef> feature(InstanceId id, const Instance& from) {
     if (auto it = features_.find(id); it != features_.end()) return it->second;
-    const Instance& i = instance(id);
+    const Instance& i = instance(id, &from);
     auto common = [&](sn::MachiningFeature& f) {
       f.its_id = text(i, 0);
       f.feature_placement = placement(reference(i, 3), i);
@@ -670,7 +678,7 @@ class Cc1Reader {
       sn::RoundHole h;
       common(h);
       h.diameter = toleranced(reference(i, 5), i);
-      const Instance& bottom = instance(reference(i, 7));
+      const Instance& bottom = instance(reference(i, 7), &i);
       if (bottom.entity() == "THROUGH_BOTTOM_CONDITION") h.bottom_condition = sn::ThroughBottomCondition{};
       else if (bottom.entity() == "CONICAL_HOLE_BOTTOM") h.bottom_condition = sn::ConicalHoleBottom{number(bottom, 0)};
       else h.bottom_condition = sn::FlatHoleBottom{};
@@ -706,7 +714,7 @@ class Cc1Reader {
           {"FLAT_SLOT_END_TYPE", sn::SlotEndType::Flat}, {"LOOP_SLOT_END_TYPE", sn::SlotEndType::Loop},
           {"WOODRUFF_SLOT_END_TYPE", sn::SlotEndType::Woodruff}};
       for (const Value& v : list(i, 7)) {
-        const Instance& end = instance(reference_in(v, i));
+        const Instance& end = instance(reference_in(v, i), &i);
         auto k = kEnds.find(end.entity());
         if (k == kEnds.end()) fail(i, "refers to #" + std::to_string(end.id) + " " + end.entity() + ", expected a slot_end_type");
         s.end_conditions.push_back(k->second);
@@ -787,7 +795,7 @@ class Cc1Reader {
     w.its_id = text(i, 0);
     w.global_tolerance = opt_number(i, 2);
     if (!attr(i, 5).is_unset()) {
-      const Instance& b = instance(reference(i, 5));
+      const Instance& b = instance(reference(i, 5), &i);
       if (b.entity() == "BLOCK") {
         w.its_bounding_geometry = sn::Block{placement(reference(b, 1), b), number(b, 2), number(b, 3), number(b, 4)};
       } else {

@@ -1,8 +1,8 @@
 // Probing in the controller dialects, through the library API: Fanuc G31 skip, Mach3 G31 probe,
 // SINUMERIK MEAS=/MEAW= measuring, Heidenhain TCH PROBE 0 (reference plane). Each is a probe
 // move (STRAIGHT_PROBE, LinuxCNC's G38.3 or G38.5); what a construct cannot be read as is a
-// located "not supported: probing cycle ..." error. (The moves around them are checked against
-// rs274 by the single-construct programs in <dialect>/.)
+// located "not supported: ..." error (so are SINUMERIK's spline interpolations). The moves around
+// them are checked against rs274 by the single-construct programs in <dialect>/.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -134,6 +134,13 @@ TEST(HeidenhainTouchProbe, OtherProbingCyclesAreReportedWhereTheyAre) {
   const InputError alone = error_of("0 BEGIN PGM P MM\n1 TCH PROBE 0.1 X+0 Y+0 Z+0\n2 END PGM P MM\n",
                                     Dialect::Heidenhain);
   EXPECT_NE(std::string(alone.what()).find("without its TCH PROBE 0.0"), std::string::npos) << alone.what();
+}
+
+TEST(SinumerikSplines, SplineInterpolationIsReportedNotCalledAsASubprogram) {
+  const InputError e = error_of("G17 G71 G90\nG0 X0 Y0\nBSPLINE G1 X10 Y10 F100\nM30\n", Dialect::Siemens840D);
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_EQ(e.where().column, 1u);
+  EXPECT_NE(std::string(e.what()).find("not supported: spline interpolation BSPLINE"), std::string::npos) << e.what();
 }
 
 }  // namespace

@@ -479,3 +479,35 @@ TEST(HeidenhainPockets, CircularPocketOnACartesianPattern) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(HeidenhainPockets, OldPocketMillingCycleFour) {
+  Options o = options_for(Dialect::Heidenhain);
+  o.tools = mill(1, 10, 50);
+  const Collect c = run("0 BEGIN PGM P4 MM\n1 TOOL CALL 1 Z S3000\n2 L Z+50 R0 FMAX M3\n"
+                        "3 CYCL DEF 4.0 POCKET MILLING\n4 CYCL DEF 4.1 SET UP -2\n5 CYCL DEF 4.2 DEPTH -7\n"
+                        "6 CYCL DEF 4.3 PECKG -4 F80\n7 CYCL DEF 4.4 X+60\n8 CYCL DEF 4.5 Y+40\n"
+                        "9 CYCL DEF 4.6 F300 DR+ RADIUS 8\n10 L X+50 Y+30 R0 FMAX\n11 L Z+2 R0 FMAX\n"
+                        "12 CYCL CALL\n13 L Z+50 R0 FMAX M30\n14 END PGM P4 MM\n",
+                        o);
+  const auto cuts = cuts_below(c, 0.0);
+  ASSERT_FALSE(cuts.empty());
+  std::set<double> levels;
+  double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
+  for (const auto& [a, b] : cuts) {
+    levels.insert(std::round(b.z * 1000) / 1000);
+    xmin = std::min(xmin, b.x); xmax = std::max(xmax, b.x); ymin = std::min(ymin, b.y); ymax = std::max(ymax, b.y);
+  }
+  EXPECT_EQ(levels, (std::set<double>{-7.0, -4.0}));  // the plunging depth from the surface Z0
+  EXPECT_NEAR(xmin, 25.0, 1e-3);  // the centre X50, 60 long, less the tool radius
+  EXPECT_NEAR(xmax, 75.0, 1e-3);
+  EXPECT_NEAR(ymin, 15.0, 1e-3);
+  EXPECT_NEAR(ymax, 45.0, 1e-3);
+  // back at the starting position before the program's next block
+  const auto ends = c.ends();
+  ASSERT_GE(ends.size(), 2u);
+  EXPECT_TRUE(near(ends[ends.size() - 2], 50, 30, 2));
+}
+
+}  // namespace

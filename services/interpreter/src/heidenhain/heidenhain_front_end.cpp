@@ -1258,6 +1258,11 @@ void Runner::cycle_def(const HBlock& b) {
   }
   if (const std::size_t dr = text.find("DR"); dr != std::string::npos && dr + 2 < text.size()) {
     cycle_values_["direction"] = text[dr + 2] == '-' ? -1.0 : 1.0;
+    // "4.6 F100 DR+ RADIUS 2": the pocket's corner radius follows the direction
+    std::size_t q = dr + 3;
+    while (q < text.size() && !(lowering::is_digit(text[q]) || text[q] == '.')) ++q;
+    double corner = 0;
+    if (q < text.size() && lowering::read_decimal(text, q, corner)) cycle_values_["corner_radius"] = corner;
   }
 }
 
@@ -1701,6 +1706,48 @@ void Runner::cycle_call(std::uint32_t column) {
   }
   if (cycle_ == "22" || cycle_ == "23" || cycle_ == "24") {
     sl_cycle(v, column);
+    return;
+  }
+  if (cycle_ == "4") {
+    // POCKET MILLING (old): the rectangle about the starting position, roughed out from the
+    // inside out layer by layer below the surface, back to the starting position at the end
+    const setup::Tool* tool = options_.tools.find(m_.state().tool_in_spindle);
+    if (tool == nullptr) m_.fail(column, "Cycle 4 needs the tool's diameter: the tool is not in the tool list");
+    const double l = std::fabs(get("first_side")), w = std::fabs(get("second_side"));
+    const double rc = std::min(v.count("corner_radius") ? std::fabs(v["corner_radius"]) : 0.0, std::min(l, w) / 2.0);
+    SlContour c;
+    const double hx = l / 2 - rc, hy = w / 2 - rc;
+    const double corners[4][2] = {{hx, -hy}, {hx, hy}, {-hx, hy}, {-hx, -hy}};
+    for (int k = 0; k < 4; ++k) {
+      const int n = rc > 1e-9 ? 8 : 0;
+      for (int i = 0; i <= n; ++i) {
+        const double a = (k * 90.0 - 90.0) * kDeg + (std::numbers::pi / 2) * (n == 0 ? 0 : i) / std::max(n, 1);
+        c.points.push_back({here.x + corners[k][0] + rc * std::cos(a), here.y + corners[k][1] + rc * std::sin(a)});
+      }
+    }
+    SlData d;
+    d.setup = std::fabs(get("setup_clearance"));
+    d.surface = here.z - d.setup;
+    d.depth = -std::fabs(get("depth"));
+    d.clearance = here.z;
+    d.overlap = table_.setting("pocket_overlap_factor", 1.0);
+    d.direction = v.count("direction") && v["direction"] < 0 ? -1.0 : 1.0;
+    SlCall call;
+    call.operation = SlOperation::RoughOut;
+    call.plunge_depth = get("plunge_depth");
+    call.plunge_feed = feed(v.count("plunge_feed") ? v["plunge_feed"] : feed_);
+    call.milling_feed = feed(get("milling_feed"));
+    call.tool_radius = tool->diameter / m_.state().mm_per_unit() / 2.0;
+    sl_machine(m_, {c}, d, call, column);
+    NeutralBlock back;
+    back.g(0, column);
+    m_.put_axes(back, here.x, here.y, std::nullopt, column);
+    if (!m_.execute(back)) {
+      back.clear();
+      back.g(0, column);
+      m_.put_axes(back, std::nullopt, std::nullopt, here.z, column);
+      m_.execute(back);
+    }
     return;
   }
   if (cycle_ == "5") {

@@ -430,6 +430,8 @@ bool Runner::run_block(SBlock& b) {
           if (it.text.empty()) m_.fail(it.column, "CALL needs a program name");
           subprogram = it.text;
           sub_column = it.column;
+        } else if (n == "BSPLINE" || n == "ASPLINE" || n == "CSPLINE") {
+          m_.fail(it.column, "not supported: spline interpolation " + n + " (a subprogram of that name is not called)");
         } else if (subprogram.empty() && n.size() > 0) {
           subprogram = n;  // a named subprogram call: PART1
           sub_column = it.column;

@@ -33,6 +33,10 @@ struct Options {
   std::optional<bool> block_numbers;
   std::uint32_t block_number_step = 10;
   Comments comments = Comments::Program;
+  // G64 P (LinuxCNC's path blending tolerance, a setting of its trajectory planner): a dialect
+  // without it refuses it, unless this is set; then it writes its own continuous mode (Fanuc,
+  // Mach3 G64, SINUMERIK G64, Heidenhain's default) and says so in a comment.
+  bool drop_path_tolerance = false;
 };
 
 }  // namespace ncbridge::gcode_writer
