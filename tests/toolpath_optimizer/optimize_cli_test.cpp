@@ -62,7 +62,7 @@ TEST_F(OptimizeCli, KrlOutputIsASrcAndItsDat) {
   const auto bad = run_program({NCBRIDGE_EXECUTABLE, "optimize", kCylinder, "--flavor", "marlin", "--to", "krl",
                                 "-o", (dir_ / "other.krl").string()});
   EXPECT_NE(bad.exit_code, 0);
-  EXPECT_NE(bad.err.find("KRL output is a .src file"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("KRL output is NAME.src"), std::string::npos) << bad.err;
   EXPECT_FALSE(fs::exists(dir_ / "other.krl"));
   EXPECT_FALSE(fs::exists(dir_ / "other.dat"));
 }
@@ -79,7 +79,7 @@ TEST_F(OptimizeCli, BadArgumentsAndBadInputLeaveNoOutput) {
       {{"optimize", good.string(), "--flavor", "prusa", "-o", out.string()}, "unknown --flavor \"prusa\""},
       {{"optimize", good.string(), "--flavor", "marlin", "--tolerance", "0", "-o", out.string()}, "--tolerance must be greater than 0"},
       {{"optimize", good.string(), "--flavor", "marlin", "--tolerance", "-0.1", "-o", out.string()}, "--tolerance must be greater than 0"},
-      {{"optimize", bad.string(), "--flavor", "marlin", "-o", out.string()}, bad.string() + ":3:4: error: X word without a valid number"},
+      {{"optimize", bad.string(), "--flavor", "marlin", "-o", out.string()}, bad.string() + ":3:4: X word without a valid number"},
       {{"optimize", good.string(), "--flavor", "marlin", "--loops", "-o", out.string()}, "printer G-code has no loop construct"},
       {{"optimize", good.string(), "--flavor", "marlin", "--to", "heidenhain-ish", "-o", out.string()}, "unknown --to"},
   };

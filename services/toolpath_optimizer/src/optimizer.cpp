@@ -48,12 +48,22 @@ void Optimizer::true_arc(Motion& m) {
   const double nu = -dv / chord, nv = du / chord;
   const double t = (m.arc.first_centre - mu) * nu + (m.arc.second_centre - mv) * nv;
   const double cu = mu + t * nu, cv = mv + t * nv;
-  const double r = std::hypot(s.first - cu, s.second - cv);
-  const double moved = std::hypot(cu - m.arc.first_centre, cv - m.arc.second_centre);
+  // The spiral the control would move and the true arc, compared point by point at equal
+  // fractions (an upper bound of the distance between the two paths).
+  Motion recentred = m;
+  recentred.arc.first_centre = cu;
+  recentred.arc.second_centre = cv;
+  const ArcPath spiral = resolve_arc(m), circle = resolve_arc(recentred);
+  if (std::abs(spiral.sweep - circle.sweep) > kPi / 2) return;  // not the same arc any more
+  double apart = 0;
+  constexpr int kSamples = 64;
+  for (int i = 1; i < kSamples; ++i) {
+    const double f = static_cast<double>(i) / kSamples;
+    apart = std::max(apart, distance(spiral.at(f), circle.at(f)));
+  }
   const double unit = m.units == canonical::Units::Inches ? 1 / 25.4 : 1.0;
-  if (moved + std::abs(r1 - r) + std::abs(r2 - r) > options_.tolerance_mm * unit / 4) return;
-  m.arc.first_centre = cu;
-  m.arc.second_centre = cv;
+  if (apart > options_.tolerance_mm * unit / 2) return;
+  m = std::move(recentred);
   ++stats_.arcs_recentred;
 }
 

@@ -34,7 +34,7 @@ struct OptimizerOptions {
   std::size_t max_run = 50000;
   // An input arc whose end is not quite on its circle (a spiral by a hair, which some controls
   // accept and some writers refuse) gets its centre moved onto the chord's bisector, where that
-  // moves its path by less than a quarter of the band.
+  // moves its path by at most half the band (measured along the arc).
   bool true_arcs = false;
 };
 
