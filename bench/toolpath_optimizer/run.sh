@@ -30,15 +30,23 @@ rs274="$(command -v rs274 || true)"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
-# best_of COMMAND... : the run with the least CPU time; sets best_cpu (s)
+# best_of COMMAND... : the run with the least CPU time (user + sys; perf's task-clock to the
+# microsecond where perf runs, else /usr/bin/time's centiseconds); sets best_cpu (s)
+use_perf=0
+if command -v perf >/dev/null && perf stat -x, -e task-clock -o "$work/probe" true 2>/dev/null; then use_perf=1; fi
 best_of() {
   best_cpu=""
   for ((i = 0; i < runs; i++)); do
-    if ! /usr/bin/time -f "%U %S" -o "$work/time" "$@" >/dev/null 2>"$work/err" </dev/null; then
-      echo "run.sh: $* failed:" >&2; head -n 5 "$work/err" >&2; exit 1
+    if ((use_perf)); then
+      perf stat -x, -e task-clock -o "$work/time" "$@" >/dev/null 2>"$work/err" </dev/null || {
+        echo "run.sh: $* failed:" >&2; head -n 5 "$work/err" >&2; exit 1; }
+      cpu=$(awk -F, '$3 == "task-clock" { printf "%.4f", $1 / 1000 }' "$work/time")
+    else
+      /usr/bin/time -f "%U %S" -o "$work/time" "$@" >/dev/null 2>"$work/err" </dev/null || {
+        echo "run.sh: $* failed:" >&2; head -n 5 "$work/err" >&2; exit 1; }
+      read -r user sys <"$work/time"
+      cpu=$(awk -v u="$user" -v s="$sys" 'BEGIN { printf "%.3f", u + s }')
     fi
-    read -r user sys <"$work/time"
-    cpu=$(awk -v u="$user" -v s="$sys" 'BEGIN { printf "%.3f", u + s }')
     if [[ -z "$best_cpu" ]] || awk -v a="$cpu" -v b="$best_cpu" 'BEGIN { exit !(a < b) }'; then best_cpu="$cpu"; fi
   done
 }
@@ -80,9 +88,12 @@ anchor() {
 }
 
 echo "tolerance $tolerance mm; best of $runs runs; $(nproc) cores; load $(cut -d' ' -f1-3 /proc/loadavg)"
+best_of "$ncbridge" --version
+startup="$best_cpu"
+echo "ncbridge's start (ncbridge --version): $(awk -v c="$startup" 'BEGIN { printf "%.1f", c * 1000 }') ms CPU, in every run below"
 if [[ -n "$arcwelder" ]]; then echo "ArcWelder: $arcwelder (measured here)"; else echo "ArcWelder: not given, ANCHOR.md's figures"; fi
 echo
-echo "| file | input blocks | ours | ArcWelder | ours/ArcWelder | ArcWelder +travel +3D | largest deviation (mm) | ours MB/s | ArcWelder MB/s | speed ratio |"
+echo "| file | input blocks | ours | ArcWelder | ours/ArcWelder | ArcWelder +travel +3D | largest deviation (mm) | ours MB/s (start excluded) | ArcWelder MB/s | speed ratio |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 failed=0
 for input in "$corpus"/*.gcode "$corpus"/*.ngc "$corpus"/*.nc; do
@@ -130,15 +141,32 @@ for input in "$corpus"/*.gcode "$corpus"/*.ngc "$corpus"/*.nc; do
   else
     aw=$(anchor "$name" 3) aw3d=$(anchor "$name" 5) aw_cpu=""
   fi
-  awk -v f="$name" -v bi="$blocks_in" -v o="$ours" -v a="$aw" -v a3="$aw3d" -v d="$deviation" \
+  awk -v st="$startup" -v f="$name" -v bi="$blocks_in" -v o="$ours" -v a="$aw" -v a3="$aw3d" -v d="$deviation" \
       -v b="$bytes" -v oc="$ours_cpu" -v ac="$aw_cpu" -v anchor_mbs="$(awk -F'|' -v f="$name" '$2 ~ f { gsub(/ /, "", $7); print $7 }' "$corpus/ANCHOR.md")" '
     function commas(n,   s) { s = sprintf("%d", n); while (s ~ /[0-9][0-9][0-9][0-9]/) sub(/[0-9][0-9][0-9]([,]|$)/, ",&", s); return s }
     BEGIN {
       if (oc <= 0) oc = 0.001
       ours_mbs = b / 1e6 / oc
+      steady = oc - st > 0.0005 ? sprintf("%.1f", b / 1e6 / (oc - st)) : "-"
       if (ac != "") { if (ac <= 0) ac = 0.001; aw_mbs = sprintf("%.1f", b / 1e6 / ac); ratio = sprintf("%.2fx", ac / oc) }
       else { aw_mbs = anchor_mbs " (ANCHOR.md)"; ratio = sprintf("%.2fx", ours_mbs / anchor_mbs) }
-      printf "| %s | %s | %s | %s | %.3f | %s | %.4f | %.1f | %s | %s |\n", f, commas(bi), commas(o), commas(a), o / a, commas(a3), d, ours_mbs, aw_mbs, ratio
+      printf "| %s | %s | %s | %s | %.3f | %s | %.4f | %.1f (%s) | %s | %s |\n", f, commas(bi), commas(o), commas(a), o / a, commas(a3), d, ours_mbs, steady, aw_mbs, ratio
     }'
 done
+
+# Steady throughput: the slicer files one after another in one file (the start amortised).
+cat "$corpus"/*.gcode >"$work/all.gcode"
+bytes=$(stat -c %s "$work/all.gcode")
+best_of "$ncbridge" optimize "$work/all.gcode" --flavor marlin --tolerance "$tolerance" --no-check -o "$work/all_out.gcode"
+ours_cpu="$best_cpu"
+if [[ -n "$arcwelder" ]]; then
+  best_of "$arcwelder" "$work/all.gcode" "$work/all_aw.gcode" --resolution-mm="$(awk -v t="$tolerance" 'BEGIN { print 2 * t }')" -y
+  aw_cpu="$best_cpu"
+else
+  aw_cpu=""
+fi
+awk -v b="$bytes" -v oc="$ours_cpu" -v ac="$aw_cpu" 'BEGIN {
+  printf "\nall slicer files in one (%.1f MB): ours %.3f s CPU (%.1f MB/s)", b / 1e6, oc, b / 1e6 / oc
+  if (ac != "") printf ", ArcWelder %.3f s (%.1f MB/s), ratio %.2fx", ac, b / 1e6 / ac, ac / oc
+  printf "\n" }'
 exit "$failed"

@@ -170,3 +170,39 @@ INSTANTIATE_TEST_SUITE_P(Dialects, CncLoops,
 
 }  // namespace
 }  // namespace ncbridge::toolpath_optimizer
+
+namespace ncbridge::toolpath_optimizer {
+namespace {
+
+// A tool change with G43 moves the program frame under the machine: the position after it is
+// not where the last move ended. KRL gets there by PTP, and the output reads back within the band.
+TEST(CncToKrl, ToolLengthChangeIsReachedByPtp) {
+  const fs::path path = fs::temp_directory_path() / ("tools-" + std::to_string(::getpid()) + ".ngc");
+  std::ofstream(path) << "G21 G90 G17\nT1 M6\nG43 H1\nG0 X0 Y0 Z10\nG1 Z0 F300\nG1 X10\nG1 X20\nG0 Z10\n"
+                         "T2 M6\nG43 H2\nG0 X5 Y5 Z2\nG1 Z-1 F200\nG1 X15\nG0 Z10\nM2\n";
+  OptimizeRequest request;
+  request.input = path;
+  request.input_kind = InputKind::Cnc;
+  std::vector<setup::Tool> tools(2);
+  tools[0].number = tools[0].pocket = 1;
+  tools[0].length = 45;
+  tools[1].number = tools[1].pocket = 2;
+  tools[1].length = 55;
+  request.cnc.tools = setup::ToolList(tools);
+  request.output = OutputFormat::Krl;
+  request.krl.name = "TOOLS";
+  request.output_name = "tools.src";
+  std::string src, dat;
+  OutputSinks sinks;
+  sinks.main = [&](std::string_view chunk) { src.append(chunk); };
+  sinks.data = [&](std::string_view chunk) { dat.append(chunk); };
+  const OptimizeResult result = optimize(request, sinks);
+  fs::remove(path);
+  ASSERT_TRUE(result.deviation.has_value());
+  EXPECT_TRUE(result.deviation->passed(0.025)) << (result.deviation->problems.empty() ? "" : result.deviation->problems.front());
+  // After tool 2's offset the program position Z 10 is Z 0: PTP there, then on.
+  EXPECT_NE(src.find("PTP {X 20, Y 0, Z 0,"), std::string::npos) << src;
+}
+
+}  // namespace
+}  // namespace ncbridge::toolpath_optimizer
