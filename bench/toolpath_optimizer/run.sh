@@ -23,6 +23,7 @@ tolerance="${4:-0.025}"
 shared="${NCBRIDGE_SHARED_DIR:-$repo/../shared}"
 corpus="$shared/corpus/arcs"
 ncbridge="$build/bin/ncbridge"
+deviation_tool="$build/bin/printer_deviation"   # ArcWelder's outputs through our checker, if built
 [[ -x "$ncbridge" ]] || { echo "run.sh: $ncbridge not built (cmake --build $build --target ncbridge)" >&2; exit 1; }
 [[ -f "$corpus/ANCHOR.md" ]] || { echo "run.sh: no $corpus/ANCHOR.md (set NCBRIDGE_SHARED_DIR)" >&2; exit 1; }
 if [[ -n "$arcwelder" && ! -x "$arcwelder" ]]; then echo "run.sh: $arcwelder is not a program" >&2; exit 1; fi
@@ -93,8 +94,8 @@ startup="$best_cpu"
 echo "ncbridge's start (ncbridge --version): $(awk -v c="$startup" 'BEGIN { printf "%.1f", c * 1000 }') ms CPU, in every run below"
 if [[ -n "$arcwelder" ]]; then echo "ArcWelder: $arcwelder (measured here)"; else echo "ArcWelder: not given, ANCHOR.md's figures"; fi
 echo
-echo "| file | input blocks | ours | ArcWelder | ours/ArcWelder | ArcWelder +travel +3D | largest deviation (mm) | ours MB/s (start excluded) | ArcWelder MB/s | speed ratio |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| file | input blocks | ours | ArcWelder | ours/ArcWelder | ArcWelder +travel +3D | largest deviation (mm) | ours MB/s (start excluded) | ArcWelder MB/s | speed ratio | ArcWelder's largest deviation (mm), spans out of the band |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 failed=0
 for input in "$corpus"/*.gcode "$corpus"/*.ngc "$corpus"/*.nc; do
   [[ -f "$input" ]] || continue
@@ -138,11 +139,16 @@ for input in "$corpus"/*.gcode "$corpus"/*.ngc "$corpus"/*.nc; do
     aw3d=$(motion_blocks "$work/aw3d.gcode")
     best_of "$arcwelder" "$input" "$work/aw.gcode" --resolution-mm="$resolution" -y
     aw_cpu="$best_cpu"
+    aw_dev="-"
+    if [[ "$ext" == gcode && -x "$deviation_tool" ]]; then
+      aw_dev=$("$deviation_tool" "$input" "$work/aw.gcode" "$tolerance" |
+               sed -E 's/^largest ([0-9.]+) mm.* ([0-9]+) spans out of the band.*/\1, \2/') || true
+    fi
   else
-    aw=$(anchor "$name" 3) aw3d=$(anchor "$name" 5) aw_cpu=""
+    aw=$(anchor "$name" 3) aw3d=$(anchor "$name" 5) aw_cpu="" aw_dev="-"
   fi
   awk -v st="$startup" -v f="$name" -v bi="$blocks_in" -v o="$ours" -v a="$aw" -v a3="$aw3d" -v d="$deviation" \
-      -v b="$bytes" -v oc="$ours_cpu" -v ac="$aw_cpu" -v anchor_mbs="$(awk -F'|' -v f="$name" '$2 ~ f { gsub(/ /, "", $7); print $7 }' "$corpus/ANCHOR.md")" '
+      -v b="$bytes" -v oc="$ours_cpu" -v ac="$aw_cpu" -v ad="$aw_dev" -v anchor_mbs="$(awk -F'|' -v f="$name" '$2 ~ f { gsub(/ /, "", $7); print $7 }' "$corpus/ANCHOR.md")" '
     function commas(n,   s) { s = sprintf("%d", n); while (s ~ /[0-9][0-9][0-9][0-9]/) sub(/[0-9][0-9][0-9]([,]|$)/, ",&", s); return s }
     BEGIN {
       if (oc <= 0) oc = 0.001
@@ -150,7 +156,7 @@ for input in "$corpus"/*.gcode "$corpus"/*.ngc "$corpus"/*.nc; do
       steady = oc - st > 0.0005 ? sprintf("%.1f", b / 1e6 / (oc - st)) : "-"
       if (ac != "") { if (ac <= 0) ac = 0.001; aw_mbs = sprintf("%.1f", b / 1e6 / ac); ratio = sprintf("%.2fx", ac / oc) }
       else { aw_mbs = anchor_mbs " (ANCHOR.md)"; ratio = sprintf("%.2fx", ours_mbs / anchor_mbs) }
-      printf "| %s | %s | %s | %s | %.3f | %s | %.4f | %.1f (%s) | %s | %s |\n", f, commas(bi), commas(o), commas(a), o / a, commas(a3), d, ours_mbs, steady, aw_mbs, ratio
+      printf "| %s | %s | %s | %s | %.3f | %s | %.4f | %.1f (%s) | %s | %s | %s |\n", f, commas(bi), commas(o), commas(a), o / a, commas(a3), d, ours_mbs, steady, aw_mbs, ratio, ad
     }'
 done
 
