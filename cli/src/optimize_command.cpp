@@ -1,10 +1,9 @@
-// `ncbridge optimize PROGRAM -o OUT`: the toolpath optimizer (docs/optimize.md). The output (and
-// the report) are written atomically: a failed run leaves no file.
+// `ncbridge optimize PROGRAM -o OUT`: the toolpath optimizer (docs/optimize.md). Printer G-code
+// (--flavor) or a CNC program (--dialect) in; printer G-code, a CNC dialect or KUKA KRL out. The
+// outputs (the program, a KRL .dat beside a .src, the report) appear together or not at all.
 #include <CLI/CLI.hpp>
-#include <unistd.h>
 
 #include <cctype>
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -13,11 +12,15 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "errors.hpp"
+#include "feedback.hpp"
+#include "input_files.hpp"
 #include "ncbridge/common/error.hpp"
+#include "ncbridge/gcode_writer/dialect.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/setup/tool_list.hpp"
-#include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/toolpath_optimizer/pipeline.hpp"
+#include "output_files.hpp"
 
 namespace ncbridge::cli {
 
@@ -33,142 +36,162 @@ struct OptimizeArguments {
   std::string subroutine_path;
   std::string heidenhain_feed_units = "mm/min";
   std::string to;
-  bool loops = false;
-  int krl_base = 1;
-  int krl_tool = 1;
   std::string output;
   std::string report;
   double tolerance = 0.025;
   double min_segment = 0;
   double max_radius = 10000;
   double extrusion_variance = 0.05;
+  bool loops = false;
   bool no_arcs = false;
   bool no_helical = false;
   bool no_check = false;
+  int krl_base = 1;
+  int krl_tool = 1;
+  std::optional<int> decimals;
 };
 
-int run_optimize(const OptimizeArguments& args) {
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// Without --tools: tools 0..99 of length and diameter 0. Positions are program-frame, so tool
+// lengths do not move the path; the program's G43 H.. and T.. M6 read.
+setup::ToolList placeholder_tools() {
+  std::vector<setup::Tool> tools;
+  for (int n = 0; n <= 99; ++n) {
+    setup::Tool t;
+    t.number = n;
+    t.pocket = n;
+    tools.push_back(t);
+  }
+  return setup::ToolList(std::move(tools));
+}
+
+// What the program is (--flavor or --dialect, or a .gcode/.gco file), and what to write.
+void read_kinds(const OptimizeArguments& args, toolpath_optimizer::OptimizeRequest& request, const Feedback& feedback) {
   using namespace toolpath_optimizer;
-  OptimizeRequest request;
-  request.input = args.program;
   if (!args.flavor.empty() && !args.dialect.empty()) {
-    throw InputError({args.program, 0, 0}, "--flavor (printer G-code) or --dialect (a CNC program), not both");
+    throw UsageError("--flavor (printer G-code) or --dialect (a CNC program), not both");
   }
   if (args.flavor.empty() && args.dialect.empty()) {
-    std::string ext = fs::path(args.program).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lower(fs::path(args.program).extension().string());
     if (ext != ".gcode" && ext != ".gco") {
-      throw InputError({args.program, 0, 0}, "say what the program is: --flavor marlin|reprap|klipper (printer G-code) "
-                                             "or --dialect rs274ngc|fanuc|mach3|siemens840d|heidenhain|auto");
+      throw UsageError("say what the program is: --flavor marlin|reprap|klipper (printer G-code) or "
+                       "--dialect rs274ngc|fanuc|mach3|siemens840d|heidenhain|auto");
     }
   }
   if (!args.flavor.empty() && !parse_printer_flavor(args.flavor, request.flavor)) {
-    throw InputError({args.program, 0, 0}, "unknown --flavor \"" + args.flavor + "\" (marlin, reprap, klipper)");
+    throw UsageError("unknown --flavor \"" + args.flavor + "\" (marlin, reprap, klipper)");
   }
   if (!args.dialect.empty()) {
     request.input_kind = InputKind::Cnc;
     if (!interpreter::parse_dialect_name(args.dialect, request.cnc.dialect)) {
-      throw InputError({args.program, 0, 0}, "unknown --dialect \"" + args.dialect +
-                                                 "\" (rs274ngc, fanuc, mach3, siemens840d, heidenhain, auto)");
+      throw UsageError("unknown --dialect \"" + args.dialect + "\" (rs274ngc, fanuc, mach3, siemens840d, heidenhain, auto)");
     }
     if (request.cnc.dialect == interpreter::Dialect::Auto) {
       const auto detected = interpreter::detect_dialect_file(args.program);
       request.cnc.dialect = detected.dialect;
-      std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n", std::string(interpreter::dialect_name(detected.dialect)).c_str(),
-                   detected.reason.c_str());
+      feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " + detected.reason + ")");
     }
-    request.cnc.require_program_end = false;
-    if (!args.tools.empty()) {
-      request.cnc.tools = setup::read_tool_list(args.tools);
-    } else {
-      // Positions are program-frame: lengths do not move the path. Tools 0..99 of length and
-      // diameter 0 let G43 H.. and T.. M6 read (docs/optimize.md).
-      std::vector<setup::Tool> tools;
-      for (int n = 0; n <= 99; ++n) {
-        setup::Tool t;
-        t.number = n;
-        t.pocket = n;
-        tools.push_back(t);
-      }
-      request.cnc.tools = setup::ToolList(std::move(tools));
-    }
+    request.cnc.require_program_end = false;  // the last block ends it, as on the control
+    request.cnc.tools = args.tools.empty() ? placeholder_tools() : setup::read_tool_list(args.tools);
     if (args.heidenhain_feed_units == "mm/s") request.cnc.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
     std::stringstream dirs(args.subroutine_path);
     for (std::string d; std::getline(dirs, d, ':');) {
       if (!d.empty()) request.cnc.subroutine_path.emplace_back(d);
     }
   }
-  if (!(args.tolerance > 0)) throw InputError({args.program, 0, 0}, "--tolerance must be greater than 0");
-  if (args.min_segment < 0) throw InputError({args.program, 0, 0}, "--min-segment must not be negative");
-  request.output_name = args.output;
+  // Where to: the input's own kind unless --to says otherwise.
+  const std::string to = lower(args.to);
+  if (to == "krl") {
+    request.output = OutputFormat::Krl;
+  } else if (to.empty() || to == "gcode") {
+    if (request.input_kind == InputKind::Cnc) {
+      if (to == "gcode") throw UsageError("--to gcode is printer G-code: a CNC program goes --to a dialect or krl");
+      request.output = OutputFormat::Cnc;
+      request.writer.dialect = *gcode_writer::parse_dialect(interpreter::dialect_name(request.cnc.dialect));
+    }
+  } else if (const auto dialect = gcode_writer::parse_dialect(to)) {
+    if (request.input_kind != InputKind::Cnc) {
+      throw UsageError("printer G-code is written as printer G-code (--to gcode) or KRL (--to krl)");
+    }
+    request.output = OutputFormat::Cnc;
+    request.writer.dialect = *dialect;
+  } else {
+    throw UsageError("unknown --to \"" + args.to + "\" (gcode, krl, rs274ngc, fanuc, mach3, siemens840d, heidenhain)");
+  }
+  if (request.loops && request.output == OutputFormat::PrinterGcode) {
+    throw UsageError("printer G-code has no loop construct: --loops needs --to krl (or a CNC dialect for a CNC program)");
+  }
+}
+
+// The name a program carries (KRL module, Heidenhain/SINUMERIK program name): the output's stem.
+std::string program_name(const std::string& output) {
+  const std::string stem = fs::path(output).stem().string();
+  return toolpath_optimizer::krl_module_name(stem.empty() || stem == "-" ? "program" : stem);
+}
+
+int run_optimize(const OptimizeArguments& args, Verbosity verbosity) {
+  using namespace toolpath_optimizer;
+  Feedback feedback(verbosity);
+  if (!(args.tolerance > 0)) throw UsageError("--tolerance must be greater than 0 (mm)");
+  if (args.min_segment < 0) throw UsageError("--min-segment must not be negative");
+  if (!(args.max_radius > 0)) throw UsageError("--max-radius must be greater than 0");
+  if (!(args.extrusion_variance >= 0)) throw UsageError("--extrusion-variance must not be negative");
+  require_input_file(args.program, "program");
+
+  OptimizeRequest request;
+  request.input = args.program;
+  request.loops = args.loops;
+  request.check = !args.no_check;
   request.optimizer.tolerance_mm = args.tolerance;
   request.optimizer.min_segment_mm = args.min_segment;
   request.optimizer.max_radius_mm = args.max_radius;
   request.optimizer.extrusion_rate_variance = args.extrusion_variance;
   request.optimizer.arcs = !args.no_arcs;
   request.optimizer.helical = !args.no_helical;
-  request.check = !args.no_check;
-  request.loops = args.loops;
-  if (args.to == "krl") {
-    request.output = OutputFormat::Krl;
-  } else if (!args.to.empty() && args.to != "gcode") {
-    throw InputError({args.program, 0, 0}, "unknown --to \"" + args.to + "\" (gcode, krl)");
-  } else if (request.input_kind == InputKind::Cnc) {
-    throw InputError({args.program, 0, 0}, "a CNC program is written with --to krl");
-  }
-  const fs::path output(args.output);
-  fs::path dat;
+  read_kinds(args, request, feedback);
+
+  OutputSet outputs;
+  outputs.protect(args.program);
+  if (!args.tools.empty()) outputs.protect(args.tools);
+  OutputFile& out = outputs.add(args.output, "-o");
+  OutputFile* dat = nullptr;
   if (request.output == OutputFormat::Krl) {
-    std::string ext = output.extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".src") throw InputError({args.output, 0, 0}, "KRL output is a .src file (its .dat is written beside it)");
-    dat = output;
-    dat.replace_extension(output.extension() == ".SRC" ? ".DAT" : ".dat");
-    request.krl.name = krl_module_name(output.stem().string());
+    const fs::path src(args.output);
+    if (lower(src.extension().string()) != ".src") {
+      throw UsageError("KRL output is NAME.src (its NAME.dat is written beside it): -o " + args.output);
+    }
+    fs::path dat_path = src;
+    dat_path.replace_extension(src.extension() == ".SRC" ? ".DAT" : ".dat");
+    dat = &outputs.add(dat_path.string(), "-o (the .dat)");
+    request.krl.name = program_name(args.output);
     request.krl.base = args.krl_base;
     request.krl.tool = args.krl_tool;
   }
-  bool shown = false;
-  if (isatty(STDERR_FILENO)) {
-    request.progress = [&shown](std::uint64_t line) {
-      std::fprintf(stderr, "\roptimizing: line %llu", static_cast<unsigned long long>(line));
-      std::fflush(stderr);
-      shown = true;
-    };
+  if (request.output == OutputFormat::Cnc) {
+    request.writer.program_name = program_name(args.output);
+    request.writer.decimals = args.decimals;
+    request.writer.tools = request.cnc.tools;
   }
-  auto clear = [&] {
-    if (shown) std::fprintf(stderr, "\r\033[K");
-    shown = false;
-  };
-  step_writer::AtomicFile file(args.output);
-  std::optional<step_writer::AtomicFile> dat_file;
-  if (!dat.empty()) dat_file.emplace(dat);
+  OutputFile* report = args.report.empty() ? nullptr : &outputs.add(args.report, "--report");
+  request.output_name = out.display_name();
+
+  Progress progress(feedback.progress_wanted());
+  request.progress = [&progress](std::uint64_t line) { progress.set("optimizing: line " + std::to_string(line)); };
   OutputSinks sinks;
-  sinks.main = [&](std::string_view chunk) { file.write(chunk); };
-  sinks.data = [&](std::string_view chunk) { dat_file->write(chunk); };
-  OptimizeResult result;
-  try {
-    result = optimize(request, sinks);
-  } catch (...) {
-    clear();
-    throw;
-  }
-  clear();
-  // The .src and its .dat both or neither: the .dat first; if the .src then cannot be put in
-  // place, the new .dat goes too.
-  if (dat_file) dat_file->commit();
-  try {
-    file.commit();
-  } catch (...) {
-    if (dat_file) {
-      std::error_code ignored;
-      fs::remove(dat, ignored);
-    }
-    throw;
-  }
-  if (!args.report.empty()) step_writer::write_file_atomically(args.report, report_json(request, result));
-  std::fprintf(stderr, "%s\n", summary_line(request, result).c_str());
-  return 0;
+  sinks.main = [&](std::string_view chunk) { out.write(chunk); };
+  sinks.data = [&](std::string_view chunk) {
+    if (dat) dat->write(chunk);
+  };
+  const OptimizeResult result = optimize(request, sinks);
+  progress.stop();
+  if (report) report->write(report_json(request, result));
+  outputs.commit();
+  feedback.summary(out.display_name() + ": " + summary_line(request, result));
+  return exit_status::ok;
 }
 
 }  // namespace
@@ -176,28 +199,30 @@ int run_optimize(const OptimizeArguments& args) {
 void add_optimize_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<OptimizeArguments>();
   CLI::App* cmd = app.add_subcommand("optimize", "Rewrite a linearised toolpath with merged lines, arcs and loops");
-  cmd->add_option("program", args->program, "Printer G-code (--flavor) or a CNC program (--dialect)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("program", args->program, "Printer G-code (--flavor) or a CNC program (--dialect)")->required();
   cmd->add_option("--flavor", args->flavor, "Printer firmware the G-code is for: marlin, reprap, klipper");
   cmd->add_option("--dialect", args->dialect, "CNC program dialect: rs274ngc, fanuc, mach3, siemens840d, heidenhain, auto");
-  cmd->add_option("--tools", args->tools, "Tool list of a CNC program (JSON or YAML, docs/formats/tools.md)")->check(CLI::ExistingFile);
-  cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
-  cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units, "Unit of Heidenhain F words (mm/min or mm/s)")
-      ->check(CLI::IsMember({"mm/min", "mm/s"}));
+  cmd->add_option("--to", args->to,
+                  "Output: gcode (printer G-code, default for --flavor), krl, or a CNC dialect (default: the input's)");
   cmd->add_option("-o,--output", args->output, "Output file (KRL: NAME.src, and NAME.dat beside it)")->required();
-  cmd->add_option("--to", args->to, "Output: gcode (the input's flavour, default) or krl");
-  cmd->add_flag("--loops", args->loops, "Write repeated layers once, as a loop (KRL FOR)");
-  cmd->add_option("--krl-base", args->krl_base, "KRL: BASE_DATA index of the part's frame (default 1)");
-  cmd->add_option("--krl-tool", args->krl_tool, "KRL: TOOL_DATA index of the tool (default 1)");
   cmd->add_option("--report", args->report, "Also write a JSON report (docs/formats/optimize-report.md)");
   cmd->add_option("--tolerance", args->tolerance, "Deviation band in mm, both ways (default 0.025)");
   cmd->add_option("--min-segment", args->min_segment, "Fold moves shorter than this (mm) into their neighbours");
   cmd->add_option("--max-radius", args->max_radius, "Largest arc radius in mm (default 10000)");
   cmd->add_option("--extrusion-variance", args->extrusion_variance,
                   "How much the filament per length may vary inside one fitted move (default 0.05)");
+  cmd->add_flag("--loops", args->loops, "Write repeated layers once, as a loop (KRL FOR, the dialect's repeat)");
   cmd->add_flag("--no-arcs", args->no_arcs, "Merge lines only");
   cmd->add_flag("--no-helical", args->no_helical, "Only arcs whose normal axis stays put");
   cmd->add_flag("--no-check", args->no_check, "Skip reading the output back through the deviation checker");
-  cmd->callback([args, &exit_code]() { exit_code = run_optimize(*args); });
+  cmd->add_option("--tools", args->tools, "Tool list of a CNC program (JSON or YAML, docs/formats/tools.md)");
+  cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
+  cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units, "Unit of Heidenhain F words (mm/min or mm/s)")
+      ->check(CLI::IsMember({"mm/min", "mm/s"}));
+  cmd->add_option("--decimals", args->decimals, "CNC output: digits after the point in mm (default 4, one more in inches)");
+  cmd->add_option("--krl-base", args->krl_base, "KRL: BASE_DATA index of the part's frame (default 1)");
+  cmd->add_option("--krl-tool", args->krl_tool, "KRL: TOOL_DATA index of the tool (default 1)");
+  cmd->callback([args, cmd, &exit_code]() { exit_code = run_optimize(*args, verbosity_of(*cmd)); });
 }
 
 }  // namespace ncbridge::cli

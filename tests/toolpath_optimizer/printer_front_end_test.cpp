@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 using namespace std::string_literals;
@@ -143,6 +144,27 @@ TEST(PrinterFrontEnd, BadInputIsLocated) {
   EXPECT_EQ(e.where().column, 10u);
   // Marlin ignores an F it cannot read; so do we (the line is kept as written).
   EXPECT_NO_THROW(read("G1 Z15.0 F{speed_travel}\n"));
+}
+
+}  // namespace
+}  // namespace ncbridge::toolpath_optimizer
+
+namespace ncbridge::toolpath_optimizer {
+namespace {
+
+// Numbers are read exactly as strtod reads them (the reader's fast path for up to 15 digits and
+// from_chars beyond), signs, leading and trailing points and long fractions included.
+TEST(PrinterFrontEnd, NumbersReadAsStrtodReadsThem) {
+  const std::vector<std::string> texts = {"0.1", "-123.456789", "+7", ".5", "5.", "-0", "0.30000000000000004",
+                                          "123456789.012345", "9999999999.99999", "1234567890.1234567", "0.000000000000001",
+                                          "76.4521", "-0.0125", "33.7306"};
+  for (const std::string& t : texts) {
+    const auto m = motions("G1 X" + t + " Y1 F1200\n");
+    ASSERT_EQ(m.size(), 1u) << t;
+    const double expected = std::strtod(t.c_str(), nullptr);
+    EXPECT_EQ(m[0].end.x, expected) << t;
+    EXPECT_EQ(std::signbit(m[0].end.x), std::signbit(expected)) << t;
+  }
 }
 
 }  // namespace

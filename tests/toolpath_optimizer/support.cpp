@@ -3,7 +3,10 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "ncbridge/toolpath_optimizer/printer_writer.hpp"
+#include "support/run_program.hpp"
 
 namespace ncbridge::toolpath_optimizer::testing {
 
@@ -23,6 +26,30 @@ PrinterRun optimize_printer_text(const std::string& text, const OptimizerOptions
   check.tolerance = options.tolerance_mm;
   run.deviation = check_deviation(printer_path(text, flavor), printer_path(run.output, flavor), check);
   return run;
+}
+
+std::string rs274_problems(const std::filesystem::path& program, bool& installed) {
+  namespace fs = std::filesystem;
+  const fs::path rs274 = ncbridge::testing::find_on_path("rs274");
+  installed = !rs274.empty();
+  if (!installed) return "rs274 not installed";
+  // rs274 keeps tool data in $HOME/.tool.mmap and rewrites its -v file: private ones.
+  const fs::path scratch = fs::temp_directory_path() / ("ncbridge-optimize-rs274-" + std::to_string(::getpid()));
+  fs::create_directories(scratch / "home");
+  std::ofstream(scratch / "params.var").close();
+  ncbridge::testing::RunOptions options;
+  options.extra_environment = {"HOME=" + (scratch / "home").string()};
+  options.discard_output = true;
+  const auto run = ncbridge::testing::run_program(
+      {rs274.string(), "-g", "-n", "2", "-v", (scratch / "params.var").string(), program.string()}, options);
+  fs::remove_all(scratch);
+  std::string said;
+  std::istringstream lines(run.err);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.empty() && line != "executing") said += line + "\n";
+  }
+  if (run.exit_code != 0 && said.empty()) said = "exit " + std::to_string(run.exit_code);
+  return said;
 }
 
 std::string read_file(const std::filesystem::path& path) {

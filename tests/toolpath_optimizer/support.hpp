@@ -26,6 +26,10 @@ std::vector<PathPiece> printer_path(const std::string& text, PrinterFlavor flavo
 
 std::string read_file(const std::filesystem::path& path);
 
+// LinuxCNC's rs274 on an RS274/NGC program: "" when it runs it without error, else what it said.
+// `installed` is false when rs274 is not on PATH (the caller skips, or fails under CI=true).
+std::string rs274_problems(const std::filesystem::path& program, bool& installed);
+
 // G0..G3 blocks counted as ANCHOR.md counts them: by modal motion mode, a block with axis words and
 // no G word continuing the mode; a block is a line with a command (comments and blank lines aside).
 std::size_t count_motion_blocks(const std::string& text);

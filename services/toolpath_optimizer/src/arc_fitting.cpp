@@ -25,6 +25,16 @@ bool circumcentre(Planar b, Planar c, double& cu, double& cv) {
   return true;
 }
 
+// atan2(y, x); a short step (|y| < x / 8, nearly every step of a fitted arc) by the series of
+// atan(y / x), to within 1e-12 rad, without libm's general atan2.
+inline double step_angle(double y, double x) {
+  if (x > 0 && std::abs(y) < 0.125 * x) {
+    const double t = y / x, t2 = t * t;
+    return t * (1 - t2 * (1.0 / 3 - t2 * (1.0 / 5 - t2 * (1.0 / 7 - t2 * (1.0 / 9 - t2 / 11)))));
+  }
+  return std::atan2(y, x);
+}
+
 class ArcCheck {
  public:
   ArcCheck(std::span<const FitVertex> v, std::size_t first, std::size_t last, const FitOptions& o)
@@ -49,17 +59,25 @@ class ArcCheck {
       cu = std::round((origin_.first + cu) / q) * q - origin_.first;
       cv = std::round((origin_.second + cv) / q) * q - origin_.second;
     }
-    const double r = std::hypot(cu, cv);
+    const double r = std::sqrt(cu * cu + cv * cv);
     if (!(r > 0) || r > o_.max_radius || r < o_.min_arc_radius) return false;
     const double tol = o_.tolerance - o_.margin;
     const std::size_t n = points_.size();
+    // Every vertex within the band of the circle first (a point's distance to any point of the
+    // circle is at least |rho - r|): most candidate circles fail here, before any angle.
+    rho_.resize(n);
+    for (std::size_t i = 1; i < n; ++i) {
+      const double qu = points_[i].u - cu, qv = points_[i].v - cv;
+      rho_[i] = std::sqrt(qu * qu + qv * qv);
+      if (std::abs(rho_[i] - r) > tol) return false;
+    }
     // Signed turning of each step about the centre.
     steps_.resize(n);
     double sum = 0;
     double pu = -cu, pv = -cv;
     for (std::size_t i = 1; i < n; ++i) {
       const double qu = points_[i].u - cu, qv = points_[i].v - cv;
-      steps_[i] = std::atan2(pu * qv - pv * qu, pu * qu + pv * qv);
+      steps_[i] = step_angle(pu * qv - pv * qu, pu * qu + pv * qv);
       sum += steps_[i];
       pu = qu, pv = qv;
     }
@@ -79,7 +97,7 @@ class ArcCheck {
       const Planar& p = points_[i];
       double e2;
       if (tau == raw) {
-        const double rho = std::hypot(p.u - cu, p.v - cv);
+        const double rho = rho_[i];
         e2 = (rho - r) * (rho - r) + (p.n - hn) * (p.n - hn);
       } else {
         const double a = a0 + dir * tau;
@@ -109,6 +127,7 @@ class ArcCheck {
   PlanePoint origin_;
   std::vector<Planar> points_;
   mutable std::vector<double> steps_;
+  mutable std::vector<double> rho_;  // each vertex's distance from the centre
 };
 
 }  // namespace

@@ -16,7 +16,9 @@ canonical::Pose pose(const Vec3& p, const std::array<double, 6>& r) {
 
 }  // namespace
 
-void CanonicalFrontEnd::source_file(std::uint32_t, std::string_view) {}
+void CanonicalFrontEnd::source_file(std::uint32_t index, std::string_view path) {
+  if (files_) files_->source_file(index, path);
+}
 
 void CanonicalFrontEnd::offset_changed(const canonical::Pose& total) {
   // The same machine position in the new program frame.
@@ -36,6 +38,7 @@ void CanonicalFrontEnd::motion(const canonical::Call& c, MotionKind kind, const 
   m.feed = kind == MotionKind::Traverse ? 0 : feed_;
   m.units = units_;
   m.source = c.source;
+  m.cycle = c.cycle;
   m.start_known = known_;
   m.arc.plane = plane_;
   // Keep what a cycle made, and moves whose timing is per block.
@@ -68,6 +71,7 @@ void CanonicalFrontEnd::call(const canonical::Call& c) {
     m.feed = feed_;
     m.units = units_;
     m.source = c.source;
+    m.cycle = c.cycle;
     m.start_known = known_;
     m.arc.plane = plane_;
     m.arc.first_centre = a->first_axis;
@@ -120,6 +124,7 @@ void to_canonical(const Element& e, canonical::Sink& sink) {
   if (const auto* m = std::get_if<Motion>(&e.item)) {
     canonical::Call c;
     c.source = m->source;
+    c.cycle = m->cycle;
     if (m->kind == MotionKind::Traverse) {
       c.data = canonical::StraightTraverse{pose(m->end, m->rotary)};
     } else if (m->kind == MotionKind::Line) {

@@ -111,6 +111,9 @@ void KrlWriter::motion(const Motion& m, int depth) {
     }
     return;
   }
+  // A move that starts where the robot is not (the program's frame moved under it: a tool length
+  // or work offset changed) gets there by PTP first, like a move from an unknown position.
+  if (m.start_known && known_ && distance(m.start, at_) > 1e-6) known_ = false;
   if (!m.start_known || !known_) {
     // The robot goes to the first point it knows by PTP, with the tool's orientation.
     text = "PTP ";
@@ -118,8 +121,10 @@ void KrlWriter::motion(const Motion& m, int depth) {
     line(depth, text);
     ++motions_;
     known_ = true;
+    at_ = m.end;
     if (!m.start_known) return;
   }
+  at_ = m.end;
   const double feed = m.feed > 0 ? m.feed * scale : -2;
   if (feed != feed_) {
     const double v = feed > 0 ? feed / 60000 : o_.rapid_m_per_s;
@@ -199,6 +204,7 @@ void KrlWriter::write(const Element& e, int depth) {
     rate_ = -1;
     for (const auto& inner : loop->body) write(inner, depth + 1);
     line(depth + 1, "NCB_ZOFF.Z = NCB_ZOFF.Z + " + real(loop->z_shift * scale, o_.decimals + 2));
+    at_.z += static_cast<double>(loop->count - 1) * loop->z_shift;  // where the last time round ends
     line(depth, "ENDFOR");
     line(depth, "$BASE = BASE_DATA[" + std::to_string(o_.base) + "]");
   }

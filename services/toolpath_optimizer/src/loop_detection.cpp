@@ -106,6 +106,30 @@ bool LoopDetector::same_layer(const Layer& a, const Layer& b, double shift) cons
   return true;
 }
 
+bool LoopDetector::may_be_body(const std::deque<Layer>& layers, std::size_t count, double shift) const {
+  const Motion* first = nullptr;
+  const Motion* last = nullptr;
+  for (std::size_t i = 0; i < count; ++i) {
+    for (const Element& e : layers[i].elements) {
+      if (const auto* m = std::get_if<Motion>(&e.item)) {
+        if (options_.motions_and_feeds_only && m->cycle) return false;
+        if (!first) first = m;
+        last = m;
+      } else if (options_.motions_and_feeds_only) {
+        const auto* c = std::get_if<canonical::Call>(&e.item);
+        if (!c || !(std::holds_alternative<canonical::SetFeedRate>(c->data) ||
+                    std::holds_alternative<canonical::Comment>(c->data))) {
+          return false;
+        }
+      }
+    }
+  }
+  if (!first || !options_.closed_bodies) return first != nullptr;
+  const double tol = options_.position_match;
+  return std::abs(first->start.x - last->end.x) <= tol && std::abs(first->start.y - last->end.y) <= tol &&
+         std::abs(first->start.z + shift - last->end.z) <= tol;
+}
+
 void LoopDetector::emit_layer(Layer&& layer) {
   for (auto& e : layer.elements) out_.element(std::move(e));
 }
@@ -153,7 +177,7 @@ void LoopDetector::settle(bool at_end) {
       if (!std::isfinite(shift)) continue;
       bool repeats = true;
       for (std::size_t i = 0; i < p && repeats; ++i) repeats = same_layer(pending_[i], pending_[p + i], shift);
-      if (!repeats) continue;
+      if (!repeats || !may_be_body(pending_, p, shift)) continue;
       for (std::size_t i = 0; i < p; ++i) {
         body_.push_back(std::move(pending_.front()));
         pending_.pop_front();

@@ -1,6 +1,7 @@
 // The --report JSON of `ncbridge optimize` (docs/formats/optimize-report.md).
 #include <nlohmann/json.hpp>
 
+#include "ncbridge/gcode_writer/dialect.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/toolpath_optimizer/pipeline.hpp"
 
@@ -13,7 +14,9 @@ std::string report_json(const OptimizeRequest& request, const OptimizeResult& r)
   report["output"] = request.output_name;
   if (request.input_kind == InputKind::Cnc) report["dialect"] = std::string(interpreter::dialect_name(request.cnc.dialect));
   else report["flavor"] = std::string(printer_flavor_name(request.flavor));
-  report["to"] = request.output == OutputFormat::Krl ? "krl" : "gcode";
+  report["to"] = request.output == OutputFormat::Krl   ? std::string("krl")
+                 : request.output == OutputFormat::Cnc ? std::string(gcode_writer::dialect_name(request.writer.dialect))
+                                                       : std::string("gcode");
   report["tolerance_mm"] = request.optimizer.tolerance_mm;
   report["min_segment_mm"] = request.optimizer.min_segment_mm;
   report["input_counts"] = {{"bytes", r.bytes_in}, {"lines", r.lines_in}, {"commands", r.commands_in},

@@ -38,9 +38,39 @@ void Optimizer::emit(Element&& e) {
   out_.element(std::move(e));
 }
 
+void Optimizer::true_arc(Motion& m) {
+  const PlanePoint s = to_plane(m.start, m.arc.plane), e = to_plane(m.end, m.arc.plane);
+  const double r1 = std::hypot(s.first - m.arc.first_centre, s.second - m.arc.second_centre);
+  const double r2 = std::hypot(e.first - m.arc.first_centre, e.second - m.arc.second_centre);
+  const double du = e.first - s.first, dv = e.second - s.second, chord = std::hypot(du, dv);
+  if (std::abs(r1 - r2) <= 1e-12 * std::max(r1, r2) || chord <= 0) return;
+  const double mu = (s.first + e.first) / 2, mv = (s.second + e.second) / 2;
+  const double nu = -dv / chord, nv = du / chord;
+  const double t = (m.arc.first_centre - mu) * nu + (m.arc.second_centre - mv) * nv;
+  const double cu = mu + t * nu, cv = mv + t * nv;
+  // The spiral the control would move and the true arc, compared point by point at equal
+  // fractions (an upper bound of the distance between the two paths).
+  Motion recentred = m;
+  recentred.arc.first_centre = cu;
+  recentred.arc.second_centre = cv;
+  const ArcPath spiral = resolve_arc(m), circle = resolve_arc(recentred);
+  if (std::abs(spiral.sweep - circle.sweep) > kPi / 2) return;  // not the same arc any more
+  double apart = 0;
+  constexpr int kSamples = 64;
+  for (int i = 1; i < kSamples; ++i) {
+    const double f = static_cast<double>(i) / kSamples;
+    apart = std::max(apart, distance(spiral.at(f), circle.at(f)));
+  }
+  const double unit = m.units == canonical::Units::Inches ? 1 / 25.4 : 1.0;
+  if (apart > options_.tolerance_mm * unit / 2) return;
+  m = std::move(recentred);
+  ++stats_.arcs_recentred;
+}
+
 void Optimizer::element(Element&& e) {
   if (auto* m = std::get_if<Motion>(&e.item)) {
     ++stats_.motions_in;
+    if (options_.true_arcs && m->kind == MotionKind::Arc && m->start_known) true_arc(*m);
     if (fittable(*m)) {
       if (!run_.empty() && !continues_run(*m)) flush();
       if (run_.empty()) vertices_.push_back({m->start, 0.0, 0.0});
@@ -76,13 +106,15 @@ void Optimizer::flush() {
   fit.tolerance = options_.tolerance_mm * unit;
   fit.margin = options_.margin_mm * unit;
   fit.min_segment = options_.min_segment_mm * unit;
-  fit.arcs = options_.arcs && first.kind == MotionKind::Line && (options_.travel_arcs || first.extrusion > 0);
+  fit.arcs = options_.arcs && first.kind == MotionKind::Line && (options_.travel_arcs || first.extrusion > 0) &&
+             (!options_.xy_arcs_only || first.arc.plane == canonical::Plane::XY);
   fit.helical = options_.helical;
   fit.max_radius = options_.max_radius_mm * unit;
   fit.min_arc_radius = options_.min_arc_radius_mm * unit;
   fit.extrusion_rate_variance = options_.extrusion_rate_variance;
   fit.plane = first.arc.plane;
   int decimals = options_.centre_decimals;
+  if (decimals >= 0 && first.units == canonical::Units::Inches) ++decimals;  // one more in inches
   if (decimals < 0) {
     int xyz = 0;
     for (const Motion& m : run_) xyz = std::max<int>(xyz, m.printer.xyz_decimals);

@@ -108,6 +108,19 @@ bool split_words(std::string_view code, std::array<W, N>& words, std::size_t& co
     } else if (!any_digit || !ends_well) {
       w.state = ValueState::Bad;
       while (j < code.size() && code[j] != ' ' && code[j] != '\t' && code[j] != '*') ++j;
+    } else if (const std::size_t digits = j - digits_begin - (point ? 1 : 0); digits <= 15) {
+      // At most 15 digits: the digits as an integer and the power of ten are both exact doubles,
+      // so one division rounds correctly (Clinger's fast path), as from_chars would.
+      static constexpr double kPowers[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8,
+                                           1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+      std::uint64_t mantissa = 0;
+      for (std::size_t k = digits_begin; k < j; ++k) {
+        if (code[k] != '.') mantissa = mantissa * 10 + static_cast<std::uint64_t>(code[k] - '0');
+      }
+      const double magnitude = static_cast<double>(mantissa) / kPowers[fraction];
+      w.value = code[i] == '-' ? -magnitude : magnitude;
+      w.state = ValueState::Number;
+      w.decimals = static_cast<std::uint8_t>(std::min<std::size_t>(fraction, 12));
     } else {
       const char* first = code.data() + i + (code[i] == '+' ? 1 : 0);
       const auto result = std::from_chars(first, code.data() + j, w.value);

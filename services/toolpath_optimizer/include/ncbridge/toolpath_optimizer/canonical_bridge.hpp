@@ -19,7 +19,8 @@ namespace ncbridge::toolpath_optimizer {
 
 class CanonicalFrontEnd final : public canonical::Sink {
  public:
-  explicit CanonicalFrontEnd(ElementSink& out) : out_(out) {}
+  // `files` (may be null) hears the stream's source files (a writer that names them in messages).
+  explicit CanonicalFrontEnd(ElementSink& out, canonical::Sink* files = nullptr) : out_(out), files_(files) {}
   void source_file(std::uint32_t index, std::string_view path) override;
   void call(const canonical::Call& call) override;
   void end() override { out_.end(); }
@@ -33,6 +34,7 @@ class CanonicalFrontEnd final : public canonical::Sink {
   void offset_changed(const canonical::Pose& total);
 
   ElementSink& out_;
+  canonical::Sink* files_;
   Vec3 position_{};
   std::array<double, 6> rotary_{};
   bool known_ = false;

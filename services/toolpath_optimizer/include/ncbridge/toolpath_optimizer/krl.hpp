@@ -60,6 +60,7 @@ class KrlWriter final : public ElementSink {
   std::function<void(std::string_view)> src_, dat_;
   std::string buffer_;
   bool known_ = false;     // the robot's Cartesian position is known (after a Cartesian PTP)
+  Vec3 at_{};              // and where it is (program units)
   double feed_ = -1;       // the $VEL.CP written last, mm/min; -1: none
   double rate_ = -1;       // the NCB_EXTRUDE written last
   std::uint64_t motions_ = 0, lines_ = 0, commands_ = 0;

@@ -11,6 +11,7 @@
 // and arc centres equal in X and Y and shifted by the same amount in Z, extrusion equal to
 // extrusion_match; text lines and canonical calls equal, comments apart (the body keeps the
 // first layer's comments). Memory holds 2 * max_period layers besides the body.
+// See LoopOptions for what a body may hold.
 #include <cstdint>
 #include <deque>
 #include <vector>
@@ -21,6 +22,13 @@ namespace ncbridge::toolpath_optimizer {
 
 struct LoopOptions {
   std::size_t max_period = 8;        // layers in one body
+  // Only bodies that end where they began, shifted by the loop's Z shift (so that the copies
+  // join up, as a loop in incremental coordinates needs); a first layer that does not is left
+  // before the loop.
+  bool closed_bodies = true;
+  // Only motions (no canned cycle's), feed rates and comments in a body (the gcode_writer's
+  // repeat construct); else text lines and other calls too, compared as they are.
+  bool motions_and_feeds_only = false;
   double position_match = 1e-6;      // program units
   double extrusion_match = 5e-5;     // filament per motion
 };
@@ -46,6 +54,7 @@ class LoopDetector final : public ElementSink {
   void close_layer();
   void settle(bool at_end);
   bool same_layer(const Layer& a, const Layer& b, double shift) const;
+  bool may_be_body(const std::deque<Layer>& layers, std::size_t count, double shift) const;
   void emit_layer(Layer&& layer);
   void emit_loop();
 

@@ -24,13 +24,18 @@ struct OptimizerOptions {
   bool arcs = true;
   bool helical = true;
   bool travel_arcs = true;           // arcs for moves that do not extrude (G1 without E)
+  bool xy_arcs_only = false;         // no arcs fitted in the XZ and YZ planes
   double max_radius_mm = 10000;
   double min_arc_radius_mm = 0;
   double extrusion_rate_variance = 0.05;
-  // Arc centres are written with this many decimals; -1: one more than the run's coordinates
-  // (printer files; CNC output states the writer's).
+  // Arc centres are written with this many decimals (in mm; one more in inches); -1: one more
+  // than the run's coordinates (printer files; CNC output states the writer's).
   int centre_decimals = -1;
   std::size_t max_run = 50000;
+  // An input arc whose end is not quite on its circle (a spiral by a hair, which some controls
+  // accept and some writers refuse) gets its centre moved onto the chord's bisector, where that
+  // moves its path by at most half the band (measured along the arc).
+  bool true_arcs = false;
 };
 
 struct OptimizerStats {
@@ -40,6 +45,7 @@ struct OptimizerStats {
   std::uint64_t lines_merged = 0;
   std::uint64_t folded = 0;
   std::uint64_t runs = 0;
+  std::uint64_t arcs_recentred = 0;
 };
 
 class Optimizer final : public ElementSink {
@@ -51,6 +57,7 @@ class Optimizer final : public ElementSink {
 
  private:
   bool fittable(const Motion& m) const;
+  void true_arc(Motion& m);
   bool continues_run(const Motion& m) const;
   void flush();
   void emit(Element&& e);

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "ncbridge/gcode_writer/options.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/toolpath_optimizer/deviation_checker.hpp"
 #include "ncbridge/toolpath_optimizer/krl.hpp"
@@ -22,6 +23,7 @@ namespace ncbridge::toolpath_optimizer {
 enum class OutputFormat : std::uint8_t {
   PrinterGcode,  // the input's own flavour
   Krl,           // KUKA KRL .src and .dat
+  Cnc,           // a CNC dialect, through the gcode_writer (`writer.dialect`)
 };
 
 enum class InputKind : std::uint8_t {
@@ -40,6 +42,7 @@ struct OptimizeRequest {
   bool loops = false;                // repeated layers as loops (not for printer G-code)
   LoopOptions loop;
   KrlOptions krl;                    // --to krl: name, frames, home; the rest is set from the input
+  gcode_writer::Options writer;      // a CNC dialect: dialect, program name, decimals, tools
   bool check = true;                 // read the output back and measure the deviation
   // Called now and then with the input bytes read so far (progress display).
   std::function<void(std::uint64_t)> progress;

@@ -9,6 +9,7 @@
 // motion (relative, whatever E mode the file used).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 #include <variant>
@@ -66,6 +67,7 @@ struct Motion {
                                    // words, a checksum, G91; a canned cycle's move ...)
   canonical::Units units = canonical::Units::Millimeters;
   canonical::Source source;        // where it came from (line 0: made by the optimizer)
+  std::optional<canonical::CycleTag> cycle;  // the canned cycle that made it (CNC; kept)
   std::uint32_t blocks = 1;        // input motion blocks this motion stands for
   PrinterSyntax printer;           // printer files only
 };
