@@ -163,7 +163,9 @@ std::vector<Operation> every_operation() {
       Bidirectional{Direction{0, 1, 0}, LeftOrRight::Right},
       ContourParallel{RotDirection::Cw, CutmodeType::Climb},
       ContourSpiral{RotDirection::Ccw, CutmodeType::Conventional},
-      CenterMilling{}};
+      CenterMilling{},
+      BidirectionalContour{Direction{1, 0, 0}, LeftOrRight::Left, RotDirection::Ccw, CutmodeType::Climb},
+      ContourBidirectional{std::nullopt, std::nullopt, RotDirection::Cw, std::nullopt}};
   for (const Two5DMillingStrategy& s : strategies) {
     out.emplace_back(two5d<PlaneRoughMilling>(9, s));
     out.emplace_back(two5d<PlaneFinishMilling>(10, s));

@@ -117,6 +117,12 @@ template <class Ar, Is<Unidirectional> S> void fields(Ar& ar, S& v) { ar(v.feed_
 template <class Ar, Is<Bidirectional> S> void fields(Ar& ar, S& v) { ar(v.feed_direction, v.stepover_direction); }
 template <class Ar, Is<ContourParallel> S> void fields(Ar& ar, S& v) { ar(v.rotation_direction, v.cutmode); }
 template <class Ar, Is<ContourSpiral> S> void fields(Ar& ar, S& v) { ar(v.rotation_direction, v.cutmode); }
+template <class Ar, Is<BidirectionalContour> S> void fields(Ar& ar, S& v) {
+  ar(v.feed_direction, v.stepover_direction, v.rotation_direction, v.spiral_cutmode);
+}
+template <class Ar, Is<ContourBidirectional> S> void fields(Ar& ar, S& v) {
+  ar(v.feed_direction, v.stepover_direction, v.rotation_direction, v.spiral_cutmode);
+}
 template <class Ar, Is<CenterMilling> S> void fields(Ar&, S&) {}
 // PLANE_ROUGH_MILLING ... BOTTOM_AND_SIDE_FINISH_MILLING add nothing to TWO5D_MILLING_OPERATION.
 template <class Ar, std::derived_from<Two5DMillingOperation> S>

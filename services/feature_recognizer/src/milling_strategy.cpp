@@ -42,7 +42,8 @@ std::vector<std::vector<Point2>> level_runs(const Layer& layer) {
 // A loop closes when the path comes back to a point it passed since the last loop closed,
 // at least `min_length` of path later. The points passed are kept in cells of the closing
 // distance, so each point looks at the few near it, not at the whole run.
-int count_closed_loops(const std::vector<Point2>& run, double min_length) {
+int count_closed_loops(const std::vector<Point2>& run, double min_length,
+                       std::vector<std::pair<std::size_t, std::size_t>>* ranges = nullptr) {
   constexpr double kClose = 1e-2;
   auto cell_of = [](Point2 p) {
     return std::pair{static_cast<long long>(std::floor(p.x / kClose)), static_cast<long long>(std::floor(p.y / kClose))};
@@ -59,6 +60,7 @@ int count_closed_loops(const std::vector<Point2>& run, double min_length) {
     if (i > 0) along[i] = along[i - 1] + planar_distance(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
     const auto c = cell_of(run[i]);
     bool closes = false;
+    std::size_t from = 0;
     for (long long dx = -1; dx <= 1 && !closes; ++dx) {
       for (long long dy = -1; dy <= 1 && !closes; ++dy) {
         auto it = latest.find(key(c.first + dx, c.second + dy));
@@ -66,6 +68,7 @@ int count_closed_loops(const std::vector<Point2>& run, double min_length) {
         for (std::size_t j = it->second; j != kNone; j = previous_in_cell[j]) {
           if (along[i] - along[j] > min_length && planar_distance(run[i].x - run[j].x, run[i].y - run[j].y) < kClose) {
             closes = true;
+            from = j;
             break;
           }
         }
@@ -73,6 +76,7 @@ int count_closed_loops(const std::vector<Point2>& run, double min_length) {
     }
     if (closes) {
       ++loops;
+      if (ranges) ranges->emplace_back(from, i);
       latest.clear();  // the next loop starts here
     }
     auto [it, inserted] = latest.try_emplace(key(c.first, c.second), i);
@@ -224,6 +228,161 @@ bool find_circles(const Layer& layer, StrategyAnalysis& out) {
   return true;
 }
 
+// The long straight moves (at least `min_pass`) along one direction (±1°): how many go each
+// way, and how their offsets across that direction step from one to the next. Parallel passes
+// that sweep an area progress one way (≥ 75 % of the steps); nested contours have long
+// parallel sides too, but their offsets jump from side to side.
+struct Passes {
+  int forward = 0, backward = 0, rising = 0, falling = 0;
+  std::vector<double> gaps;
+  int count() const { return forward + backward; }
+  bool progress() const { return std::max(rising, falling) >= 0.75 * (rising + falling); }
+  // Bidirectional when both senses occur (≥ ¼), else unidirectional.
+  Strategy strategy() const {
+    return std::min(forward, backward) >= std::max(1, count() / 4) ? Strategy::Bidirectional : Strategy::Unidirectional;
+  }
+  double stepover() const {  // the median offset step
+    if (gaps.empty()) return 0;
+    auto g = gaps;
+    std::nth_element(g.begin(), g.begin() + static_cast<std::ptrdiff_t>(g.size() / 2), g.end());
+    return g[g.size() / 2];
+  }
+};
+
+// The passes along the direction of the most length (1° bins, direction modulo 180°), when
+// that is more than `min_share` of `total`; with `any_direction`, along the first direction by
+// length (each over `min_share`) whose three or more passes progress (a zigzag whose links
+// along the walls are as long as its passes).
+std::optional<Passes> parallel_passes(const std::vector<Straight>& straights, double total, double min_pass,
+                                      double min_share, bool any_direction) {
+  std::map<int, double> bins;
+  for (const auto& s : straights) {
+    if (s.length() < min_pass) continue;
+    double deg = std::atan2(s.b.y - s.a.y, s.b.x - s.a.x) * 180 / std::numbers::pi;
+    if (deg < 0) deg += 180;
+    bins[static_cast<int>(std::lround(deg)) % 180] += s.length();
+  }
+  std::vector<std::pair<double, int>> directions;  // (length about it, degrees)
+  for (const auto& [deg, len] : bins) {
+    const double around = len + (bins.count((deg + 1) % 180) ? bins[(deg + 1) % 180] : 0) +
+                          (bins.count((deg + 179) % 180) ? bins[(deg + 179) % 180] : 0);
+    directions.emplace_back(around, deg);
+  }
+  // Longest first; among equal lengths the lowest angle (the order the bins were met in).
+  std::stable_sort(directions.begin(), directions.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (const auto& [length, dominant] : directions) {
+    if (length <= min_share * total) break;
+    const double ux = std::cos(dominant * std::numbers::pi / 180), uy = std::sin(dominant * std::numbers::pi / 180);
+    Passes p;
+    std::vector<double> sequence;
+    for (const auto& s : straights) {
+      const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+      const double along = (dx * ux + dy * uy) / s.length();
+      if (std::abs(along) < std::cos(1.5 * std::numbers::pi / 180) || s.length() < min_pass) continue;
+      (along > 0 ? p.forward : p.backward)++;
+      sequence.push_back(-s.a.x * uy + s.a.y * ux);
+    }
+    for (std::size_t i = 1; i < sequence.size(); ++i) {
+      const double d = sequence[i] - sequence[i - 1];
+      if (std::abs(d) <= 0.05) continue;
+      (d > 0 ? p.rising : p.falling)++;
+      p.gaps.push_back(std::abs(d));
+    }
+    if (!any_direction || (p.count() >= 3 && p.progress() && !p.gaps.empty())) return p;
+  }
+  return std::nullopt;
+}
+
+// A zigzag whose passes are not taken in order (FreeCAD's: the outer two, then the middle):
+// at least three long moves along one direction, each at its own offset, all between the same
+// two lines across them (the area's ends), in alternating senses. Nested contours have as many
+// parallel moves, but each loop's are shorter than the one around it.
+struct Sweep {
+  Strategy strategy = Strategy::None;
+  double stepover = 0;
+};
+
+std::optional<Sweep> unordered_zigzag(const std::vector<Straight>& straights, double min_pass) {
+  std::map<int, std::vector<const Straight*>> by_direction;
+  for (const auto& s : straights) {
+    if (s.length() < min_pass) continue;
+    double deg = std::atan2(s.b.y - s.a.y, s.b.x - s.a.x) * 180 / std::numbers::pi;
+    if (deg < 0) deg += 180;
+    by_direction[static_cast<int>(std::lround(deg)) % 180].push_back(&s);
+  }
+  for (const auto& [deg, passes] : by_direction) {
+    if (passes.size() < 3) continue;
+    const double ux = std::cos(deg * std::numbers::pi / 180), uy = std::sin(deg * std::numbers::pi / 180);
+    auto along = [&](Point2 p) { return p.x * ux + p.y * uy; };
+    auto across = [&](Point2 p) { return -p.x * uy + p.y * ux; };
+    const double lo = std::min(along(passes.front()->a), along(passes.front()->b));
+    const double hi = std::max(along(passes.front()->a), along(passes.front()->b));
+    std::vector<double> offsets;
+    bool same_span = true, alternating = true;
+    for (std::size_t k = 0; k < passes.size() && same_span; ++k) {
+      const auto* p = passes[k];
+      same_span = std::abs(std::min(along(p->a), along(p->b)) - lo) < 0.05 && std::abs(std::max(along(p->a), along(p->b)) - hi) < 0.05 &&
+                  std::abs(across(p->a) - across(p->b)) < 0.05;
+      if (k > 0) alternating = alternating && (along(p->b) - along(p->a) > 0) != (along(passes[k - 1]->b) - along(passes[k - 1]->a) > 0);
+      offsets.push_back(across(p->a));
+    }
+    if (!same_span || !alternating) continue;
+    std::sort(offsets.begin(), offsets.end());
+    std::vector<double> gaps;
+    for (std::size_t k = 1; k < offsets.size(); ++k) gaps.push_back(offsets[k] - offsets[k - 1]);
+    if (*std::min_element(gaps.begin(), gaps.end()) <= 0.05) continue;  // two passes on one line
+    std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
+    return Sweep{Strategy::Bidirectional, gaps[gaps.size() / 2]};
+  }
+  return std::nullopt;
+}
+
+std::vector<Straight> straights_of(const std::vector<Point2>& run, std::size_t first, std::size_t last, double& total) {
+  std::vector<Straight> out;
+  for (std::size_t i = first + 1; i <= last && i < run.size(); ++i) {
+    Straight s{run[i - 1], run[i]};
+    total += s.length();
+    if (s.length() > 1e-6) out.push_back(s);
+  }
+  return out;
+}
+
+// FreeCAD's ZigZagOffset and its kin: a closed loop along the boundary (the offset contour) that
+// ends the level's path or begins it, and parallel passes sweeping the inside in the rest:
+// bidirectional-contour when the loop comes last, contour-bidirectional when first.
+std::optional<Sweep> zigzag_and_contour(const std::vector<std::vector<Point2>>& runs, double tool_r) {
+  if (runs.size() != 1 || runs.front().size() < 4) return std::nullopt;
+  const auto& run = runs.front();
+  const double min_loop = 2 * std::max(tool_r, 0.5);
+  std::vector<double> along(run.size(), 0);
+  for (std::size_t i = 1; i < run.size(); ++i) {
+    along[i] = along[i - 1] + planar_distance(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
+  }
+  auto near = [&](std::size_t a, std::size_t b) { return planar_distance(run[a].x - run[b].x, run[a].y - run[b].y) < 1e-2; };
+  auto sweeps = [&](std::size_t first, std::size_t last) -> std::optional<double> {
+    double total = 0;
+    const auto rest = straights_of(run, first, last, total);
+    const auto passes = parallel_passes(rest, total, tool_r, 0.3, true);
+    if (!passes || passes->strategy() != Strategy::Bidirectional) return std::nullopt;
+    return passes->stepover();
+  };
+  const std::size_t end = run.size() - 1;
+  // The loop that ends the path: from the first point the path's end comes back to.
+  for (std::size_t j = 0; j < end; ++j) {
+    if (along[end] - along[j] < min_loop) break;
+    if (!near(j, end)) continue;
+    if (const auto stepover = sweeps(0, j)) return Sweep{Strategy::BidirectionalContour, *stepover};
+    break;
+  }
+  // The loop that begins it: to the first point that comes back to its start.
+  for (std::size_t i = 1; i <= end; ++i) {
+    if (along[i] < min_loop || !near(0, i)) continue;
+    if (const auto stepover = sweeps(i, end)) return Sweep{Strategy::ContourBidirectional, *stepover};
+    break;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 StrategyAnalysis analyse_strategy(const Layer& layer) {
@@ -264,59 +423,31 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
     return out;
   }
 
-  // Direction histogram of the long straight moves (1° bins, direction modulo 180°).
-  std::map<int, double> bins;
-  for (const auto& s : straights) {
-    if (s.length() < tool_r) continue;
-    double deg = std::atan2(s.b.y - s.a.y, s.b.x - s.a.x) * 180 / std::numbers::pi;
-    if (deg < 0) deg += 180;
-    bins[static_cast<int>(std::lround(deg)) % 180] += s.length();
-  }
-  int dominant = -1;
-  double dominant_length = 0;
-  for (const auto& [deg, len] : bins) {
-    const double around = len + (bins.count((deg + 1) % 180) ? bins[(deg + 1) % 180] : 0) +
-                          (bins.count((deg + 179) % 180) ? bins[(deg + 179) % 180] : 0);
-    if (around > dominant_length) dominant_length = around, dominant = deg;
-  }
-  const bool parallel = dominant >= 0 && dominant_length > 0.6 * total;
-
-  if (parallel) {
-    // Parallel passes sweep across the area: the offsets of successive passes move one way.
-    // Nested contours have long parallel sides too, but their offsets jump from side to side.
-    const double ux = std::cos(dominant * std::numbers::pi / 180), uy = std::sin(dominant * std::numbers::pi / 180);
-    int forward = 0, backward = 0;
-    std::vector<double> sequence;
-    for (const auto& s : straights) {
-      const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-      const double along = (dx * ux + dy * uy) / s.length();
-      if (std::abs(along) < std::cos(1.5 * std::numbers::pi / 180) || s.length() < tool_r) continue;
-      (along > 0 ? forward : backward)++;
-      sequence.push_back(-s.a.x * uy + s.a.y * ux);
-    }
-    int rising = 0, falling = 0;
-    std::vector<double> gaps;
-    for (std::size_t i = 1; i < sequence.size(); ++i) {
-      const double d = sequence[i] - sequence[i - 1];
-      if (std::abs(d) <= 0.05) continue;
-      (d > 0 ? rising : falling)++;
-      gaps.push_back(std::abs(d));
-    }
-    const int parallel_moves = forward + backward;
-    if (parallel_moves == 1 && out.closed_loops == 0) {
+  // Parallel passes along the direction of the most length, if that is more than 60 % of it.
+  if (const auto passes = parallel_passes(straights, total, tool_r, 0.6, false)) {
+    if (passes->count() == 1 && out.closed_loops == 0) {
       out.strategy = Strategy::CenterMilling;  // one straight pass: a slot along its centre line
       return out;
     }
     // Two passes side by side (joined by a rapid, as a face milled in two passes) sweep too.
-    const bool enough = parallel_moves >= 3 || (parallel_moves == 2 && out.closed_loops == 0);
-    const bool sweeping = enough && std::max(rising, falling) >= 0.75 * (rising + falling);
-    if (sweeping) {
-      std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
-      out.stepover = gaps.empty() ? 0 : gaps[gaps.size() / 2];
-      out.strategy = std::min(forward, backward) >= std::max(1, parallel_moves / 4) ? Strategy::Bidirectional
-                                                                                    : Strategy::Unidirectional;
+    const bool enough = passes->count() >= 3 || (passes->count() == 2 && out.closed_loops == 0);
+    if (enough && passes->progress()) {
+      out.stepover = passes->stepover();
+      out.strategy = passes->strategy();
       return out;
     }
+  }
+  // A zigzag and one contour along the boundary, in either order.
+  if (const auto both = zigzag_and_contour(runs, tool_r)) {
+    out.strategy = both->strategy;
+    out.stepover = both->stepover;
+    return out;
+  }
+  // A zigzag over a rectangle whose passes are not taken in order.
+  if (const auto zigzag = unordered_zigzag(straights, tool_r)) {
+    out.strategy = zigzag->strategy;
+    out.stepover = zigzag->stepover;
+    return out;
   }
 
   // Many separate passes at one level, or mostly short curved moves: adaptive clearing.

@@ -57,7 +57,24 @@ struct Bidirectional { std::optional<Direction> feed_direction; std::optional<Le
 struct ContourParallel { std::optional<RotDirection> rotation_direction; std::optional<CutmodeType> cutmode; friend bool operator==(const ContourParallel&, const ContourParallel&) = default; };
 struct ContourSpiral { std::optional<RotDirection> rotation_direction; std::optional<CutmodeType> cutmode; friend bool operator==(const ContourSpiral&, const ContourSpiral&) = default; };
 struct CenterMilling { friend bool operator==(const CenterMilling&, const CenterMilling&) = default; };
-using Two5DMillingStrategy = std::variant<Unidirectional, Bidirectional, ContourParallel, ContourSpiral, CenterMilling>;
+// Zigzag then one contour along the boundary (bidirectional_contour), or the contour first
+// (contour_bidirectional).
+struct BidirectionalContour {
+  std::optional<Direction> feed_direction;
+  std::optional<LeftOrRight> stepover_direction;
+  std::optional<RotDirection> rotation_direction;
+  std::optional<CutmodeType> spiral_cutmode;
+  friend bool operator==(const BidirectionalContour&, const BidirectionalContour&) = default;
+};
+struct ContourBidirectional {
+  std::optional<Direction> feed_direction;
+  std::optional<LeftOrRight> stepover_direction;
+  std::optional<RotDirection> rotation_direction;
+  std::optional<CutmodeType> spiral_cutmode;
+  friend bool operator==(const ContourBidirectional&, const ContourBidirectional&) = default;
+};
+using Two5DMillingStrategy = std::variant<Unidirectional, Bidirectional, ContourParallel, ContourSpiral, CenterMilling,
+                                          BidirectionalContour, ContourBidirectional>;
 
 struct Two5DMillingOperation : MachiningOperation {
   std::optional<Two5DMillingStrategy> its_machining_strategy;

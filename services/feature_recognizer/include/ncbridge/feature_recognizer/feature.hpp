@@ -54,10 +54,13 @@ enum class OperationType : std::uint8_t {
 };
 
 // ISO 14649-11 two5D_milling_strategy subtypes, plus the tool-path patterns CAM adds.
+// BidirectionalContour: zigzag, then one contour along the boundary; ContourBidirectional: the
+// contour first.
 enum class Strategy : std::uint8_t {
   None, Unidirectional, Bidirectional, CenterMilling, Contour, ContourParallel,
-  ContourSpiral, Adaptive, Helical, Plunge
+  ContourSpiral, Adaptive, Helical, Plunge, BidirectionalContour, ContourBidirectional
 };
+inline constexpr Strategy kLastStrategy = Strategy::ContourBidirectional;
 
 struct RecognizedOperation {
   OperationType type = OperationType::BottomAndSideRoughMilling;
