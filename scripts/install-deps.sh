@@ -12,9 +12,11 @@ packages=(
   libspdlog-dev libfmt-dev
   libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev
+  libpugixml-dev libcurl4-openssl-dev  # live capture: MTConnect agents' XML over HTTP
   libssl-dev  # SHA-256 of written files (services), openssl for the DDS Security test PKI
   # Open CASCADE: STEP B-rep part files (part_reader only)
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
+  libtbb-dev  # the OCCT CMake targets link libtbb.so, which only the -dev package provides
 )
 if [[ "${1:-}" == "--tests" ]]; then
   # clang + its runtime for libFuzzer targets and sanitizer builds; iproute2 for multi-host tests.
@@ -24,6 +26,8 @@ if [[ "${1:-}" == "--tests" ]]; then
   # The reference tools the tests compare with: LinuxCNC's standalone interpreter `rs274` and its
   # simulated controller (linuxcnc-uspace), and a headless browser for the HTML pages.
   packages+=(linuxcnc-uspace chromium)
+  # The install test: bash completion run as bash runs it, the man page rendered, the .deb made.
+  packages+=(bash-completion groff-base man-db dpkg-dev)
 fi
 
 missing=()

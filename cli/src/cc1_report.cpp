@@ -3,6 +3,8 @@
 // whole workplan in the report, so they wait in an anonymous temporary file.
 #include "cc1_report.hpp"
 
+#include "ncbridge/common/version.hpp"
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -57,9 +59,12 @@ void append_key(std::string& out, std::string_view key) {
 
 }  // namespace
 
-Cc1Report::Cc1Report(const std::filesystem::path& path, const Head& head) : file_(path), features_(std::tmpfile()) {
+Cc1Report::Cc1Report(OutputFile& out, const Head& head) : file_(out), features_(std::tmpfile()) {
   if (features_ == nullptr) throw std::system_error(errno, std::generic_category(), "report: temporary file");
   text_ = "{\n  ";
+  append_key(text_, "ncbridge_version");
+  append_string(text_, version());
+  text_ += ",\n  ";
   append_key(text_, "program");
   append_string(text_, head.program);
   text_ += ",\n  ";
@@ -78,7 +83,9 @@ void Cc1Report::element(const stepnc::Project& project, const stepnc::Executable
   first_element_ = false;
   const auto* ws = std::get_if<stepnc::MachiningWorkingstep>(&element);
   append_key(text_, "kind");
-  append_string(text_, ws ? "MACHINING_WORKINGSTEP" : "RAPID_MOVEMENT");
+  append_string(text_, ws ? "MACHINING_WORKINGSTEP"
+                          : std::holds_alternative<stepnc::WorkpieceProbing>(element) ? "WORKPIECE_PROBING"
+                                                                                       : "RAPID_MOVEMENT");
   std::visit(
       [&](const auto& x) {
         text_ += ", ";
@@ -139,7 +146,7 @@ void Cc1Report::flush_features() {
   feature_text_.clear();
 }
 
-void Cc1Report::commit(const stepnc::Project& project, const Tail& tail) {
+void Cc1Report::finish(const stepnc::Project& project, const Tail& tail) {
   text_ += first_element_ ? "],\n  " : "\n  ],\n  ";
   text_ += "\"features\": [";
   flush_text();
@@ -173,11 +180,14 @@ void Cc1Report::commit(const stepnc::Project& project, const Tail& tail) {
   text_ += "\"warnings\": [";
   for (std::size_t i = 0; i < tail.warnings.size(); ++i) {
     text_ += i == 0 ? "\n    {" : ",\n    {";
+    append_key(text_, "kind");
+    append_string(text_, tail.warnings[i].kind);
+    text_ += ", ";
     append_key(text_, "where");
-    append_string(text_, tail.warnings[i].first);
+    append_string(text_, tail.warnings[i].where.to_string());
     text_ += ", ";
     append_key(text_, "message");
-    append_string(text_, tail.warnings[i].second);
+    append_string(text_, tail.warnings[i].message);
     text_ += '}';
   }
   text_ += tail.warnings.empty() ? "],\n  " : "\n  ],\n  ";
@@ -189,7 +199,6 @@ void Cc1Report::commit(const stepnc::Project& project, const Tail& tail) {
   }
   text_ += tail.timings_ms.empty() ? "}\n}\n" : "\n  }\n}\n";
   flush_text();
-  file_.commit();
 }
 
 }  // namespace ncbridge::cli

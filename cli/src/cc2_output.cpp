@@ -59,10 +59,17 @@ Cc2Output build_cc2(const stepnc::Project& cc1, const std::optional<setup::Stock
   const auto rawpiece = fr::stock_from_cc1(cc1);
   if (rawpiece) out.stock = *rawpiece;
   else if (stock) out.stock = *stock;
-  else throw InputError({source, 0, 0}, "no stock: the file has no rawpiece block; give --stock");
-  fr::Options options;
-  options.checkpoint = checkpoint;
-  out.features = fr::recognize(fr::workingsteps_from_cc1(cc1), out.stock, options);
+  else throw InputError({source, 1, 1}, "no stock: the file has no rawpiece block; give --stock");
+  try {
+    fr::Options options;
+    options.checkpoint = checkpoint;
+    out.features = fr::recognize(fr::workingsteps_from_cc1(cc1), out.stock, options);
+  } catch (const InputError& e) {
+    // The recogniser knows the program lines of its moves, not the file: name it here.
+    if (!e.where().file.empty()) throw;
+    throw InputError({source, e.where().line == 0 ? 1 : e.where().line, e.where().column == 0 ? 1 : e.where().column},
+                     e.message());
+  }
   auto cc2 = fr::cc2_from_cc1(cc1, out.features);
   out.project = std::move(cc2.project);
   out.feature_ids = std::move(cc2.feature_ids);

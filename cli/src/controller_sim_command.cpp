@@ -8,9 +8,8 @@
 // branches are taken and subroutines called by our interpreter, and what is published is the
 // sequence of blocks executed, without the o-word lines that steered it, so a block in a loop
 // is published once per pass and a subroutine's blocks once per call. A call's arguments are
-// published as the parameter setting "#1=[...] #2=[...]" that the call performs. How: every
-// block of a copy of the program is preceded by a comment line naming its line, and the
-// interpreter's COMMENT calls give the order the lines ran in. Not expanded: subroutines in
+// published as the parameter setting "#1=[...] #2=[...]" that the call performs (the order is
+// capture::execution_order, services/capture/, which live capture also uses). Not expanded: subroutines in
 // other files (o<name> call of a file on the subroutine path: their blocks are not published)
 // and the restoring of the caller's #1-#30 after a call returns. Other dialects are published
 // line by line as written (their control flow is not run here).
@@ -29,14 +28,17 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "errors.hpp"
+#include "input_files.hpp"
+#include "output_files.hpp"
 #include "ncbridge/bus/participant.hpp"
 #include "ncbridge/bus/writer.hpp"
-#include "ncbridge/canonical/call.hpp"
+#include "ncbridge/capture/execution_order.hpp"
 #include "ncbridge/common/error.hpp"
+#include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/service/job_watch.hpp"
 #include "ncbridge/setup/tool_list.hpp"
-#include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/wire/block.hpp"
 
 namespace ncbridge::cli {
@@ -54,131 +56,27 @@ struct ControllerSimArguments {
   double timeout_s = 600;
 };
 
-// One block as the controller executes it.
-struct ExecutedLine {
-  std::uint32_t line = 0;  // 1-based line in the program
-  std::string text;
-};
-
-constexpr std::string_view kMarker = "ncbridge-sim-line ";
-
-std::vector<std::string> split_lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(std::move(line));
-  }
-  return lines;
-}
-
-bool blank(std::string_view line) { return line.find_first_not_of(" \t") == std::string_view::npos; }
-
-// The o-word of a line ("sub", "call", "while", ...), lower case, or "" when it has none.
-std::string o_word_keyword(std::string_view line) {
-  std::size_t i = line.find_first_not_of(" \t/");
-  if (i != std::string_view::npos && (line[i] == 'n' || line[i] == 'N')) {  // an N word first
-    ++i;
-    while (i < line.size() && (std::isdigit(static_cast<unsigned char>(line[i])) || line[i] == '.')) ++i;
-    i = line.find_first_not_of(" \t", i);
-  }
-  if (i == std::string_view::npos || (line[i] != 'o' && line[i] != 'O')) return "";
-  ++i;
-  if (i < line.size() && line[i] == '<') {
-    i = line.find('>', i);
-    if (i == std::string_view::npos) return "";
-    ++i;
-  } else {
-    const std::size_t digits = i;
-    while (i < line.size() && std::isdigit(static_cast<unsigned char>(line[i]))) ++i;
-    if (i == digits) return "";
-  }
-  i = line.find_first_not_of(" \t", i);
-  std::string keyword;
-  while (i < line.size() && std::isalpha(static_cast<unsigned char>(line[i])))
-    keyword.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(line[i++]))));
-  return keyword;
-}
-
-// "o100 call [1] [2+#3]" -> "#1=[1] #2=[2+#3]"; "" when the call has no arguments.
-std::string call_arguments_as_parameters(std::string_view line) {
-  std::string out;
-  std::size_t at = line.find_first_of("lL", line.find_first_of("cC", line.find_first_of("oO")));
-  int n = 0, depth = 0;
-  std::string arg;
-  for (std::size_t i = at; at != std::string_view::npos && i < line.size(); ++i) {
-    const char c = line[i];
-    if (c == '(' || c == ';') break;  // a comment
-    if (c == '[') {
-      if (depth++ > 0) arg.push_back(c);
-    } else if (c == ']') {
-      if (--depth > 0) arg.push_back(c);
-      else out += (out.empty() ? "" : " ") + ("#" + std::to_string(++n) + "=[" + arg + "]"), arg.clear();
-    } else if (depth > 0) {
-      arg.push_back(c);
-    }
-  }
-  return out;
-}
-
-// Collects the order in which the marked lines ran.
-class LineTrace final : public canonical::Sink {
- public:
-  void source_file(std::uint32_t, std::string_view) override {}
-  void call(const canonical::Call& c) override {
-    const auto* comment = std::get_if<canonical::Comment>(&c.data);
-    if (comment && comment->text.starts_with(kMarker)) lines.push_back(static_cast<std::uint32_t>(std::stoul(comment->text.substr(kMarker.size()))));
-  }
-  void end() override {}
-  std::vector<std::uint32_t> lines;
-};
-
-// The blocks the controller executes, in order: the program run with its control flow.
-std::vector<ExecutedLine> execute(const std::string& program, const std::string& text, const setup::ToolList& tools) {
-  const std::vector<std::string> lines = split_lines(text);
-  std::string marked;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const std::string keyword = o_word_keyword(lines[i]);
-    const bool percent = lines[i].find_first_not_of(" \t") != std::string::npos && lines[i][lines[i].find_first_not_of(" \t")] == '%';
-    if (!blank(lines[i]) && !percent && (keyword.empty() || keyword == "call"))
-      marked += "(" + std::string(kMarker) + std::to_string(i + 1) + ")\n";
-    marked += lines[i] + "\n";
-  }
-  interpreter::Options options;
-  options.tools = tools;
-  LineTrace trace;
-  interpreter::interpret_text(marked, program, options, trace);
-  std::vector<ExecutedLine> out;
-  for (const std::uint32_t n : trace.lines) {
-    const std::string& line = lines.at(n - 1);
-    if (o_word_keyword(line) == "call") {
-      const std::string parameters = call_arguments_as_parameters(line);
-      if (!parameters.empty()) out.push_back({n, parameters});
-      continue;
-    }
-    out.push_back({n, line});
-  }
-  return out;
-}
-
-// Other dialects: the program's lines as written.
-std::vector<ExecutedLine> as_written(const std::string& text) {
-  std::vector<ExecutedLine> out;
-  const std::vector<std::string> lines = split_lines(text);
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (!blank(lines[i])) out.push_back({static_cast<std::uint32_t>(i + 1), lines[i]});
-  }
-  return out;
-}
-
 int run_controller_sim(const ControllerSimArguments& args) {
-  std::ifstream in(args.program, std::ios::binary);
-  if (!in) throw InputError({args.program, 0, 0}, "cannot open program file");
-  std::ostringstream text;
-  text << in.rdbuf();
+  if (!args.tools.empty()) require_input_file(args.tools, "--tools");
+  OutputSet outputs;
+  OutputFile* output = args.output.empty() ? nullptr : &outputs.add(args.output, "-o");
+  outputs.protect(args.program);
+  outputs.protect(args.tools);
+  const Input program = open_input(args.program, "program");
+  std::string text;
+  if (program.text) {
+    text = *program.text;
+  } else {
+    std::ifstream in(program.path, std::ios::binary);
+    if (!in) throw InputError({program.name, 0, 0}, "cannot open program file");
+    std::ostringstream read;
+    read << in.rdbuf();
+    text = read.str();
+  }
   const setup::ToolList tools = args.tools.empty() ? setup::ToolList{} : setup::read_tool_list(args.tools);
-  const std::vector<ExecutedLine> blocks =
-      args.dialect == "rs274ngc" ? execute(args.program, text.str(), tools) : as_written(text.str());
+  interpreter::Dialect dialect = interpreter::Dialect::Rs274Ngc;
+  interpreter::parse_dialect_name(args.dialect, dialect);
+  const std::vector<capture::ExecutedLine> blocks = capture::execution_order(program.name, text, tools, dialect);
 
   std::string run_id = args.run_id;
   if (run_id.empty()) {
@@ -194,8 +92,8 @@ int run_controller_sim(const ControllerSimArguments& args) {
   if (!args.output.empty()) watch.emplace(participant, job_id);
   bus::Writer writer(participant, bus::Topic::Blocks);
   if (!writer.wait_for_readers(1, std::chrono::seconds(10))) {
-    std::fprintf(stderr, "ncbridge controller-sim: no interpreter service on DDS domain %u\n", participant.domain_id());
-    return 3;
+    throw ServiceUnavailable("no interpreter service on DDS domain " + std::to_string(participant.domain_id()) +
+                             " (is `ncbridge up` running, with the CYCLONEDDS_URI it printed?)");
   }
   const auto period = args.rate > 0 ? std::chrono::duration<double>(1.0 / args.rate) : std::chrono::duration<double>(0);
   auto next = std::chrono::steady_clock::now();
@@ -206,8 +104,8 @@ int run_controller_sim(const ControllerSimArguments& args) {
                  wire::encode_block(b));
     ++seq;
   };
-  publish(wire::BlockKind::RunStart, args.program, 0);
-  for (const ExecutedLine& block : blocks) {
+  publish(wire::BlockKind::RunStart, program.name, 0);
+  for (const capture::ExecutedLine& block : blocks) {
     if (period.count() > 0) {
       next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
       std::this_thread::sleep_until(next);
@@ -226,14 +124,15 @@ int run_controller_sim(const ControllerSimArguments& args) {
   const service::JobOutcome outcome = watch->wait(timeout);
   if (outcome.error) {
     const wire::JobStatus& e = *outcome.error;
-    std::fprintf(stderr, "%s: error: %s (%s)\n", e.where.to_string().c_str(), e.message.c_str(), e.stage.c_str());
-    return 1;
+    print_error(e.where, e.message + " (" + e.stage + ")");
+    return exit_status::input_error;
   }
   if (!outcome.file) {
-    std::fprintf(stderr, "ncbridge controller-sim: run %s not converted after %.0f s\n", job_id.c_str(), args.timeout_s);
-    return 3;
+    throw ServiceUnavailable("run " + job_id + " not converted after " + std::to_string(static_cast<long long>(args.timeout_s)) +
+                             " s (--timeout)");
   }
-  step_writer::write_file_atomically(args.output, outcome.file->content);
+  output->write(outcome.file->content);
+  outputs.commit();
   std::fprintf(stderr, "%zu blocks executed; run end to %s file: %.1f ms\n", blocks.size(),
                outcome.file->level == wire::Part21Level::Cc2 ? "CC2" : "CC1",
                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run_end).count());
@@ -245,16 +144,15 @@ int run_controller_sim(const ControllerSimArguments& args) {
 void add_controller_sim_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ControllerSimArguments>();
   CLI::App* cmd = app.add_subcommand("controller-sim", "Publish a program block by block as a controller running it");
-  cmd->add_option("program", args->program, "Part program")->required()->check(CLI::ExistingFile);
+  cmd->add_option("program", args->program, "Part program; - reads standard input")->required();
   cmd->add_option("--controller", args->controller, "Controller id")->required();
   cmd->add_option("--run-id", args->run_id, "Run id (default: run-<unix ms>)");
-  cmd->add_option("--tools", args->tools, "The controller's tool table (JSON or YAML), for running the program")
-      ->check(CLI::ExistingFile);
+  cmd->add_option("--tools", args->tools, "The controller's tool table (JSON or YAML), for running the program");
   cmd->add_option("--dialect", args->dialect, "Program dialect; control flow is run for rs274ngc only")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain"}));
   cmd->add_option("--rate", args->rate, "Blocks per second (default: as fast as possible)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));
-  cmd->add_option("-o,--output", args->output, "Wait for the run's Part 21 file and write it here");
+  cmd->add_option("-o,--output", args->output, "Wait for the run's Part 21 file and write it here (- for standard output)");
   cmd->add_option("--timeout", args->timeout_s, "Seconds to wait for the file (default 600)");
   cmd->callback([args, &exit_code]() { exit_code = run_controller_sim(*args); });
 }

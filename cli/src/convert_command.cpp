@@ -1,15 +1,16 @@
 // `ncbridge convert PROGRAM --tools T --stock S -o OUT.stp [--report R.json]`: the embedded
-// pipeline interpreter -> cc1_builder -> step_writer in one process. The output is written
-// atomically: a failed run leaves no file (and an old OUT.stp untouched). CC1 from a program is
+// pipeline interpreter -> cc1_builder -> step_writer in one process. Every input and output path
+// is checked before work starts, and the outputs (Part 21 file, report, page) appear together
+// or not at all (output_files.hpp): a failed run leaves no file and old ones untouched. The
+// program may be "-" (standard input), an output "-" (standard output). CC1 from a program is
 // streamed: each workplan element is written (file and report) as soon as the builder finishes
 // it, so memory stays flat; CC2 needs the whole CC1 model first.
 #include <CLI/CLI.hpp>
-#include <unistd.h>
 
 #include <cctype>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -21,14 +22,20 @@
 #include "cc1_report.hpp"
 #include "cc2_output.hpp"
 #include "commands.hpp"
+#include "errors.hpp"
+#include "feedback.hpp"
 #include "html_report.hpp"
+#include "input_files.hpp"
+#include "output_files.hpp"
+#include "setup_checks.hpp"
+#include "warning.hpp"
 #include "ncbridge/cc1_builder/cc1_builder.hpp"
 #include "ncbridge/common/error.hpp"
+#include "ncbridge/common/version.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/setup/stock.hpp"
 #include "ncbridge/setup/tool_list.hpp"
-#include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/step_writer/part21_writer.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
 #include "ncbridge/step_writer/stepnc_stream_writer.hpp"
@@ -51,6 +58,8 @@ struct ConvertArguments {
   std::string html;
   std::string subroutine_path;
   std::optional<double> security_plane;
+  bool strict = false;
+  std::vector<int> machine_functions;
   double max_seconds = 0;  // 0: no limit
 };
 
@@ -65,7 +74,7 @@ class TimeLimit {
     if (!deadline_ || Clock::now() <= *deadline_) return;
     char text[32];
     std::snprintf(text, sizeof text, "%g", seconds_);
-    throw InputError({program_, 0, 0}, std::string("the conversion ran longer than --max-seconds (") + text +
+    throw InputError({program_, 1, 1}, std::string("the conversion ran longer than --max-seconds (") + text +
                                            " s) and was stopped; nothing was written");
   }
   bool set() const { return deadline_.has_value(); }
@@ -88,13 +97,18 @@ interpreter::Dialect dialect_of(const std::string& name) {
 }
 
 // Forwards the stream to the builder, timing the builder's share when a report wants it (two
-// clock readings a call cost a few percent) and showing progress on a terminal.
+// clock readings a call cost a few percent), telling the setup checks what only the stream
+// says, and feeding the progress line.
 class TimedSink final : public canonical::Sink {
  public:
-  TimedSink(cc1_builder::Cc1Builder& builder, bool progress, bool timed, const TimeLimit& limit)
-      : builder_(builder), progress_(progress), timed_(timed), limit_(limit) {}
-  void source_file(std::uint32_t index, std::string_view path) override { builder_.source_file(index, path); }
+  TimedSink(cc1_builder::Cc1Builder& builder, ProgramFacts& facts, Progress& progress, bool timed, const TimeLimit& limit)
+      : builder_(builder), facts_(facts), progress_(progress), timed_(timed), limit_(limit) {}
+  void source_file(std::uint32_t index, std::string_view path) override {
+    facts_.source_file(index, path);
+    builder_.source_file(index, path);
+  }
   void call(const canonical::Call& c) override {
+    facts_.call(c);
     if (timed_) {
       const auto start = Clock::now();
       builder_.call(c);
@@ -103,40 +117,37 @@ class TimedSink final : public canonical::Sink {
       builder_.call(c);
     }
     if ((++calls_ & 0xFFF) == 0) limit_.check();
-    if (progress_ && (calls_ & 0xFFFF) == 0) {
-      std::fprintf(stderr, "\rconverting: line %u, %llu canonical calls", c.source.line,
-                   static_cast<unsigned long long>(calls_));
-      std::fflush(stderr);
-      shown_ = true;
-    }
+    progress_.tick([&] {
+      return "converting: line " + std::to_string(c.source.line) + ", " + std::to_string(builder_.calls_seen()) +
+             " canonical calls";
+    });
   }
   void end() override {
     const auto start = Clock::now();
     builder_.end();
     spent_ += Clock::now() - start;
-    clear();
-  }
-  void clear() {
-    if (shown_) std::fprintf(stderr, "\r\033[K");
-    shown_ = false;
   }
   Clock::duration spent() const { return spent_; }
 
  private:
   cc1_builder::Cc1Builder& builder_;
-  bool progress_, timed_;
+  ProgramFacts& facts_;
+  Progress& progress_;
+  bool timed_;
   const TimeLimit& limit_;
-  bool shown_ = false;
   std::uint64_t calls_ = 0;
   Clock::duration spent_{};
 };
 
-// Streamed CC1: each finished workplan element goes to the Part 21 writer and, timed, the report
-// (the builder's clock runs around it too).
+// Streamed CC1: each finished workplan element goes to the setup checks, the Part 21 writer
+// and, timed, the report (the builder's clock runs around it too).
 class ElementWriter final : public cc1_builder::WorkplanSink {
  public:
-  ElementWriter(step_writer::StepncStreamWriter& writer, Cc1Report* report) : writer_(writer), report_(report) {}
+  ElementWriter(step_writer::StepncStreamWriter& writer, Cc1Report* report, SetupChecks& checks)
+      : writer_(writer), report_(report), checks_(checks) {}
   void element(const stepnc::Project& project, const stepnc::Executable& element) override {
+    checks_.element(project, element);
+    workingsteps_ += std::holds_alternative<stepnc::MachiningWorkingstep>(element);
     if (!report_) {
       writer_.element(project, element);
       return;
@@ -147,19 +158,24 @@ class ElementWriter final : public cc1_builder::WorkplanSink {
     spent_ += Clock::now() - start;
   }
   Clock::duration spent() const { return spent_; }
+  std::size_t workingsteps() const { return workingsteps_; }
 
  private:
   step_writer::StepncStreamWriter& writer_;
   Cc1Report* report_;
+  SetupChecks& checks_;
+  std::size_t workingsteps_ = 0;
   Clock::duration spent_{};
 };
 
 std::string_view kind_of(const stepnc::Executable& e) {
-  return std::holds_alternative<stepnc::RapidMovement>(e) ? "RAPID_MOVEMENT" : "MACHINING_WORKINGSTEP";
+  if (std::holds_alternative<stepnc::RapidMovement>(e)) return "RAPID_MOVEMENT";
+  if (std::holds_alternative<stepnc::WorkpieceProbing>(e)) return "WORKPIECE_PROBING";
+  return "MACHINING_WORKINGSTEP";
 }
 
-nlohmann::ordered_json report_of(const ConvertArguments& args, const stepnc::Project& p,
-                         const std::vector<cc1_builder::Warning>& warnings, std::uint64_t calls,
+nlohmann::ordered_json report_of(const ConvertArguments& args, const std::string& program, const stepnc::Project& p,
+                         const std::vector<Warning>& warnings, std::uint64_t calls,
                          std::size_t bytes, const nlohmann::ordered_json& timings) {
   using json = nlohmann::ordered_json;
   json workingsteps = json::array();
@@ -189,8 +205,11 @@ nlohmann::ordered_json report_of(const ConvertArguments& args, const stepnc::Pro
   json features = json::array();
   for (const auto& f : p.features) features.push_back({{"id", stepnc::feature_id(f)}, {"type", stepnc::entity_name(f)}});
   json warning_list = json::array();
-  for (const auto& w : warnings) warning_list.push_back({{"where", w.where.to_string()}, {"message", w.message}});
-  return json{{"program", args.program},
+  for (const auto& w : warnings) {
+    warning_list.push_back({{"kind", w.kind}, {"where", w.where.to_string()}, {"message", w.message}});
+  }
+  return json{{"ncbridge_version", std::string(version())},
+              {"program", program},
               {"output", args.output},
               {"level", args.level},
               {"canonical_calls", calls},
@@ -204,11 +223,8 @@ nlohmann::ordered_json report_of(const ConvertArguments& args, const stepnc::Pro
 
 // A Part 21 file (a CC1 file to raise to CC2) rather than a program: it opens with
 // ISO-10303-21; after any white space and /* comments */.
-bool is_part21_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(8192, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
+bool is_part21_file(const Input& input) {
+  const std::string head = input_head(input, 8192);
   std::size_t i = 0;
   while (i < head.size()) {
     if (std::isspace(static_cast<unsigned char>(head[i]))) {
@@ -224,6 +240,24 @@ bool is_part21_file(const std::string& path) {
   return head.compare(i, 13, "ISO-10303-21;") == 0;
 }
 
+// What is open before any work starts: the program, and every output checked.
+struct ConvertRun {
+  Feedback feedback{Verbosity::Normal};
+  std::unique_ptr<Progress> progress;
+  Input program;
+  OutputSet outputs;
+  OutputFile* stp = nullptr;
+  OutputFile* report = nullptr;
+  OutputFile* html = nullptr;
+};
+
+// The Part 21 FILE_NAME.name: the output's file name, or the program's for standard output.
+std::string part21_file_name(const ConvertRun& run) {
+  std::string name = run.stp->file_name();
+  if (name.empty()) name = run.program.from_stdin() ? "stdin.stp" : run.program.path.stem().string() + ".stp";
+  return name;
+}
+
 cc1_builder::Options builder_options(const ConvertArguments& args, const std::optional<setup::Stock>& stock) {
   cc1_builder::Options options;
   options.tools = setup::read_tool_list(args.tools);
@@ -232,95 +266,210 @@ cc1_builder::Options builder_options(const ConvertArguments& args, const std::op
   return options;
 }
 
-interpreter::Options interpreter_options(const ConvertArguments& args, const setup::ToolList& tools) {
+// The interpreter's warnings go to `warnings` (kind "reading"): what it read although the
+// controller's data is missing or the construct has no motion of its own. --strict makes the
+// interpreter refuse them itself, at their place in the program.
+interpreter::Options interpreter_options(const ConvertArguments& args, const ConvertRun& run, const setup::ToolList& tools,
+                                         std::vector<Warning>& warnings) {
+  const Input& program = run.program;
   interpreter::Options interp;
+  interp.strict = args.strict;
+  // a program that ends without M2/M30 (or %, END PGM) runs to its last block on the control:
+  // converted, with a warning (refused under --strict)
+  interp.require_program_end = false;
+  interp.machine_functions = args.machine_functions;
+  interp.warning = [&warnings](const SourceLocation& where, const std::string& message) {
+    Warning w;
+    w.kind = "reading";
+    w.where = where;
+    w.message = message;
+    warnings.push_back(std::move(w));
+  };
   interp.dialect = dialect_of(args.dialect);
-  if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
-    const auto detected = interpreter::detect_dialect_file(args.program);
-    interp.dialect = detected.dialect;
-    std::fprintf(stderr, "ncbridge: dialect %s (detected: %s)\n",
-                 std::string(interpreter::dialect_name(detected.dialect)).c_str(), detected.reason.c_str());
-  }
   if (args.heidenhain_feed_units == "mm/s") interp.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
   interp.tools = tools;
   std::stringstream dirs(args.subroutine_path);
   for (std::string d; std::getline(dirs, d, ':');) {
     if (!d.empty()) interp.subroutine_path.emplace_back(d);
   }
+  if (interp.dialect == interpreter::Dialect::Auto) {  // detect (the reading that takes the whole program), and say which
+    const auto detected = program.text ? interpreter::detect_dialect_reading(*program.text, program.name, interp)
+                                       : interpreter::detect_dialect_reading(program.path, interp);
+    interp.dialect = detected.dialect;
+    run.feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " + detected.reason + ")");
+  }
   return interp;
 }
 
-void interpret(const ConvertArguments& args, const interpreter::Options& interp, TimedSink& sink) {
-  try {
-    interpreter::interpret_file(args.program, interp, sink);
-  } catch (...) {
-    sink.clear();
-    throw;
+void interpret(const Input& program, const interpreter::Options& interp, TimedSink& sink) {
+  if (program.text) {
+    interpreter::interpret_text(*program.text, program.name, interp, sink);
+  } else {
+    interpreter::interpret_file(program.path, interp, sink);
   }
 }
 
-void print_warnings(const std::vector<cc1_builder::Warning>& warnings) {
-  for (const auto& w : warnings) std::fprintf(stderr, "%s: warning: %s\n", w.where.to_string().c_str(), w.message.c_str());
+std::string setup_detail(const cc1_builder::Options& options, const ConvertArguments& args) {
+  std::string text = "read " + std::to_string(options.tools.tools().size()) + " tools from " + args.tools;
+  if (options.stock) {
+    const auto& s = *options.stock;
+    char box[160];
+    std::snprintf(box, sizeof box, "; stock %g x %g x %g mm (X%g..%g Y%g..%g Z%g..%g) from ", s.size(0), s.size(1), s.size(2),
+                  s.min[0], s.max[0], s.min[1], s.max[1], s.min[2], s.max[2]);
+    text += box + args.stock;
+  }
+  return text;
 }
+
+std::string seconds(double s) {
+  char text[32];
+  if (s < 1) std::snprintf(text, sizeof text, "%.0f ms", s * 1000);
+  else std::snprintf(text, sizeof text, "%.2f s", s);
+  return text;
+}
+
+std::string count(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+void print_warnings(const std::vector<Warning>& warnings) {
+  for (const auto& w : warnings) print_warning(w.where, w.message + " [" + w.kind + "]");
+}
+
+// After the outputs appeared: the warnings, the one-line summary, and with -v what was written.
+void finish_run(ConvertRun& run, const ConvertArguments& args, const std::vector<Warning>& warnings,
+                const std::string& contents, std::uint64_t bytes) {
+  run.progress->stop();
+  print_warnings(warnings);
+  run.feedback.detail("wrote " + run.stp->display_name() + " (" + std::to_string(bytes) + " bytes)" +
+                      (run.report ? ", " + run.report->display_name() : "") + (run.html ? ", " + run.html->display_name() : ""));
+  run.feedback.summary(run.stp->display_name() + ": " + (args.level == "cc2" ? "CC2, " : "CC1, ") + contents + ", " +
+                       count(warnings.size(), "warning", "warnings") + ", " + seconds(run.feedback.elapsed_s()));
+}
+
+SetupCheckInputs check_inputs(const ConvertArguments& args, const Input& program, const std::optional<setup::Stock>& stock,
+                              const setup::ToolList* tools) {
+  SetupCheckInputs in;
+  in.program = program.name;
+  in.stock = stock;
+  in.stock_file = args.stock;
+  in.tools = tools;
+  in.tools_file = args.tools;
+  in.security_plane = args.security_plane;
+  in.heidenhain_per_minute = (args.dialect == "heidenhain" || args.dialect == "auto") && args.heidenhain_feed_units == "mm/min";
+  return in;
+}
+
+// The setup checks' warnings first (they say the result may be wrong), then the
+// interpreter's (from reading the program), then the builder's.
+std::vector<Warning> all_warnings(const SetupChecks& checks, const std::vector<Warning>& read,
+                                  const std::vector<cc1_builder::Warning>& builder) {
+  std::vector<Warning> all = checks.warnings();
+  all.insert(all.end(), read.begin(), read.end());
+  for (const auto& w : builder) {
+    Warning warning;
+    warning.kind = "representation";
+    warning.where = w.where;
+    warning.message = w.message;
+    all.push_back(std::move(warning));
+  }
+  return all;
+}
+
+// --strict: a warning is an error; nothing is written (the outputs are not committed).
+void refuse_warnings_if_strict(const ConvertArguments& args, const std::vector<Warning>& warnings, Progress& progress) {
+  if (!args.strict || warnings.empty()) return;
+  progress.stop();
+  for (const auto& w : warnings) print_error(w.where, w.message + " [" + w.kind + "]");
+  throw InputError({}, std::to_string(warnings.size()) + (warnings.size() == 1 ? " warning" : " warnings") +
+                           " with --strict: nothing written");
+}
+
 
 // CC1 from a program, streamed: interpreter -> cc1_builder -> (Part 21 writer, report) element
 // by element; the model is never whole in memory.
-int run_streamed_cc1(const ConvertArguments& args, Clock::time_point t0) {
+int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_point t0) {
   const TimeLimit limit(args, t0);
   const std::optional<setup::Stock> stock = setup::read_stock(args.stock);
   const cc1_builder::Options options = builder_options(args, stock);
-  const interpreter::Options interp = interpreter_options(args, options.tools);
+  run.feedback.detail(setup_detail(options, args));
+  std::vector<Warning> read_warnings;
+  const interpreter::Options interp = interpreter_options(args, run, options.tools, read_warnings);
 
   step_writer::StepncWriteOptions write;
-  write.file_name = std::filesystem::path(args.output).filename().string();
-  step_writer::AtomicFile file(args.output);
-  step_writer::StepncStreamWriter writer(write, [&](std::string_view chunk) { file.write(chunk); });
+  write.file_name = part21_file_name(run);
+  step_writer::StepncStreamWriter writer(write, [&](std::string_view chunk) { run.stp->write(chunk); });
   std::optional<Cc1Report> report;
-  if (!args.report.empty()) report.emplace(args.report, Cc1Report::Head{args.program, args.output, args.level});
-  ElementWriter elements(writer, report ? &*report : nullptr);
+  if (run.report) report.emplace(*run.report, Cc1Report::Head{run.program.name, args.output, args.level});
+  ProgramFacts facts;
+  SetupChecks checks(check_inputs(args, run.program, stock, &options.tools), &facts);
+  ElementWriter elements(writer, report ? &*report : nullptr, checks);
   cc1_builder::Cc1Builder builder(options, &elements);
-  TimedSink sink(builder, isatty(STDERR_FILENO) != 0, report.has_value(), limit);
+  TimedSink sink(builder, facts, *run.progress, report.has_value(), limit);
   const auto t_interpret = Clock::now();
-  interpret(args, interp, sink);
+  interpret(run.program, interp, sink);
   const auto t_built = Clock::now();
+  run.feedback.detail("interpreted and built " + count(builder.calls_seen(), "canonical call", "canonical calls") + " in " +
+                      seconds(ms(t_built - t_interpret) / 1000));
   const stepnc::Project project = builder.take_project();
+  checks.finish(project);
+  const std::vector<Warning> warnings = all_warnings(checks, read_warnings, builder.warnings());
+  refuse_warnings_if_strict(args, warnings, *run.progress);
   const std::uint64_t bytes = writer.finish(project);
   const auto t_written = Clock::now();
-  file.commit();
-  const auto t_done = Clock::now();
 
-  print_warnings(builder.warnings());
   if (report) {
     // The writer's and the report's work happens inside the builder's calls; each is counted
-    // once, under step_writer.
+    // once, under step_writer. "output" is the report's last part, the syncs and renames.
     const double written_ms = ms(elements.spent()) + ms(t_written - t_built);
     Cc1Report::Tail tail;
     tail.canonical_calls = builder.calls_seen();
     tail.output_bytes = bytes;
-    for (const auto& w : builder.warnings()) tail.warnings.emplace_back(w.where.to_string(), w.message);
+    tail.warnings = warnings;
     tail.timings_ms = {{"read_inputs", ms(t_interpret - t0)},
                        {"interpreter", ms(t_built - t_interpret) - ms(sink.spent())},
                        {"cc1_builder", ms(sink.spent()) - ms(elements.spent())},
                        {"step_writer", written_ms},
-                       {"output", ms(t_done - t_written)},
-                       {"total", ms(t_done - t0)}};
-    report->commit(project, tail);
+                       {"output", ms(Clock::now() - t_written)},
+                       {"total", ms(Clock::now() - t0)}};
+    report->finish(project, tail);
   }
+  run.outputs.commit();
+  finish_run(run, args, warnings,
+             count(elements.workingsteps(), "workingstep", "workingsteps") + ", " + count(project.tools.size(), "tool", "tools"),
+             bytes);
   return 0;
 }
 
-int run_convert(const ConvertArguments& args) {
-  const auto t0 = Clock::now();
-  const TimeLimit limit(args, t0);
+// Every path checked and the program read (standard input) before any work starts.
+ConvertRun open_run(const ConvertArguments& args, Verbosity verbosity) {
+  ConvertRun run;
+  run.feedback = Feedback(verbosity);
   if (!args.html.empty() && args.level != "cc2") {
-    throw InputError({args.program, 0, 0}, "--html needs --level cc2 (it draws the recognised features)");
+    throw UsageError("--html needs --level cc2 (it draws the recognised features)");
   }
-  const bool part21_input = is_part21_file(args.program);
+  if (args.security_plane && !std::isfinite(*args.security_plane)) throw UsageError("--security-plane must be a number");
+  if (!args.tools.empty()) require_input_file(args.tools, "--tools");
+  if (!args.stock.empty()) require_input_file(args.stock, "--stock");
+  run.stp = &run.outputs.add(args.output, "-o");
+  if (!args.report.empty()) run.report = &run.outputs.add(args.report, "--report");
+  if (!args.html.empty()) run.html = &run.outputs.add(args.html, "--html");
+  for (const std::string* input : {&args.program, &args.tools, &args.stock}) run.outputs.protect(*input);
+  run.program = open_input(args.program, "program");
+  run.progress = std::make_unique<Progress>(run.feedback.progress_wanted());
+  return run;
+}
+
+int run_convert(const ConvertArguments& args, Verbosity verbosity) {
+  const auto t0 = Clock::now();
+  ConvertRun run = open_run(args, verbosity);
+  const TimeLimit limit(args, t0);
+  const bool part21_input = is_part21_file(run.program);
   if (!part21_input && (args.tools.empty() || args.stock.empty())) {
-    throw InputError({args.program, 0, 0}, "converting a program needs --tools and --stock");
+    throw UsageError("converting a program needs --tools and --stock");
   }
-  if (!part21_input && args.level == "cc1") return run_streamed_cc1(args, t0);
-  std::vector<cc1_builder::Warning> warnings;
+  if (!part21_input && args.level == "cc1") return run_streamed_cc1(args, run, t0);
+  std::vector<Warning> warnings;
   std::uint64_t calls = 0;
   stepnc::Project project;
   std::optional<setup::Stock> stock;
@@ -329,71 +478,98 @@ int run_convert(const ConvertArguments& args) {
   Clock::duration builder_spent{};
   if (part21_input) {  // the CC1 model read back: everything recognition uses is in the file
     t_interpret = Clock::now();
-    auto read = step_writer::read_stepnc_file(args.program);
-    for (const auto& d : read.warnings) warnings.push_back({d.where, d.message});
+    auto read = run.program.text ? step_writer::read_stepnc(*run.program.text, run.program.name)
+                                 : step_writer::read_stepnc_file(run.program.path);
+    for (const auto& d : read.warnings) warnings.push_back({"input", d.where, d.message});
     project = std::move(read.project);
     t_built = Clock::now();
+    SetupChecks checks(check_inputs(args, run.program, stock, nullptr), nullptr);
+    for (const auto& e : project.main_workplan.its_elements) checks.element(project, e);
+    checks.finish(project);
+    warnings.insert(warnings.begin(), checks.warnings().begin(), checks.warnings().end());
   } else {
     const cc1_builder::Options options = builder_options(args, stock);
-    const interpreter::Options interp = interpreter_options(args, options.tools);
+    run.feedback.detail(setup_detail(options, args));
+    std::vector<Warning> read_warnings;
+    const interpreter::Options interp = interpreter_options(args, run, options.tools, read_warnings);
     cc1_builder::Cc1Builder builder(options);
-    TimedSink sink(builder, isatty(STDERR_FILENO) != 0, !args.report.empty(), limit);
+    ProgramFacts facts;
+    TimedSink sink(builder, facts, *run.progress, !args.report.empty(), limit);
     t_interpret = Clock::now();
-    interpret(args, interp, sink);
+    interpret(run.program, interp, sink);
     t_built = Clock::now();
-    warnings = builder.warnings();
+    run.feedback.detail("interpreted and built " + count(builder.calls_seen(), "canonical call", "canonical calls") + " in " +
+                        seconds(ms(t_built - t_interpret) / 1000));
     calls = builder.calls_seen();
     project = builder.take_project();
     builder_spent = sink.spent();
+    SetupChecks checks(check_inputs(args, run.program, stock, &options.tools), &facts);
+    for (const auto& e : project.main_workplan.its_elements) checks.element(project, e);
+    checks.finish(project);
+    warnings = all_warnings(checks, read_warnings, builder.warnings());
   }
   // CC2: the features recognised in the CC1 model, with their workingsteps (cc2_output.hpp).
   std::optional<Cc2Output> cc2;
   if (args.level == "cc2") {
+    run.progress->set("recognising features");
     std::function<void()> checkpoint;
     if (limit.set()) checkpoint = [&limit] { limit.check(); };
-    cc2 = build_cc2(project, stock, args.program, checkpoint);
+    cc2 = build_cc2(project, stock, run.program.name, checkpoint);
+    run.feedback.detail("recognised " + count(cc2->features.size(), "feature", "features") + " in " +
+                        seconds(ms(Clock::now() - t_built) / 1000));
   }
   const auto t_recognized = Clock::now();
+  run.progress->set("writing " + run.stp->display_name());
 
   step_writer::StepncWriteOptions write;
-  write.file_name = std::filesystem::path(args.output).filename().string();
+  write.file_name = part21_file_name(run);
   if (cc2) write.description = {"ISO 14649 CC2 program written by ncbridge"};
-  // The text streams into the temporary file as it is made; "output" is the fsync and rename.
-  step_writer::AtomicFile file(args.output);
-  const std::uint64_t bytes = step_writer::write_stepnc(cc2 ? cc2->project : project, write, [&](std::string_view chunk) { file.write(chunk); });
+  // The text streams into the temporary file as it is made.
+  const std::uint64_t bytes =
+      step_writer::write_stepnc(cc2 ? cc2->project : project, write, [&](std::string_view chunk) { run.stp->write(chunk); });
   const auto t_written = Clock::now();
-  file.commit();
-  const auto t_done = Clock::now();
 
   if (cc2) {
-    for (const auto& w : cc2->warnings) {
-      cc1_builder::Warning warning;
-      warning.where.file = args.program;
-      warning.message = w;
-      warnings.push_back(std::move(warning));
+    for (const auto& message : cc2->warnings) {
+      Warning w;
+      w.kind = "recognition";
+      w.where.file = run.program.name;
+      w.message = message;
+      warnings.push_back(std::move(w));
     }
   }
-  print_warnings(warnings);
-  if (!args.report.empty()) {
+  refuse_warnings_if_strict(args, warnings, *run.progress);
+  if (run.report) {
     const double builder_ms = ms(builder_spent);
     nlohmann::ordered_json timings{{"read_inputs", ms(t_interpret - t0)},
                                  {"interpreter", ms(t_built - t_interpret) - builder_ms},
                                  {"cc1_builder", builder_ms}};
     if (cc2) timings["feature_recognizer"] = ms(t_recognized - t_built);
     timings["step_writer"] = ms(t_written - t_recognized);
-    timings["output"] = ms(t_done - t_written);
-    timings["total"] = ms(t_done - t0);
-    auto report = report_of(args, cc2 ? cc2->project : project, warnings, calls, bytes, timings);
+    timings["output"] = ms(Clock::now() - t_written);
+    timings["total"] = ms(Clock::now() - t0);
+    auto report = report_of(args, run.program.name, cc2 ? cc2->project : project, warnings, calls, bytes, timings);
     if (cc2) report["features"] = cc2_features_json(*cc2);
-    step_writer::write_file_atomically(args.report, report.dump(2) + "\n");
+    run.report->write(report.dump(2) + "\n");
   }
-  if (!args.html.empty()) {
+  if (run.html) {
     HtmlReportInput page;
-    page.title = std::filesystem::path(args.program).filename().string();
+    page.title = run.program.from_stdin() ? run.program.name : run.program.path.filename().string();
     page.cc2 = &*cc2;
-    for (const auto& w : warnings) page.warnings.push_back(w.where.to_string() + ": " + w.message);
-    step_writer::write_file_atomically(args.html, html_report(page));
+    for (const auto& w : warnings) {
+      const bool setup = w.kind != "representation" && w.kind != "recognition" && w.kind != "input";
+      (setup ? page.setup_warnings : page.warnings).push_back(w.where.to_string() + ": " + w.message);
+    }
+    run.html->write(html_report(page));
   }
+  run.outputs.commit();
+  const stepnc::Project& written = cc2 ? cc2->project : project;
+  std::size_t workingsteps = 0;
+  for (const auto& e : written.main_workplan.its_elements) workingsteps += std::holds_alternative<stepnc::MachiningWorkingstep>(e);
+  finish_run(run, args, warnings,
+             (cc2 ? count(cc2->features.size(), "feature", "features") + ", " : std::string()) +
+                 count(workingsteps, "workingstep", "workingsteps") + ", " + count(written.tools.size(), "tool", "tools"),
+             bytes);
   return 0;
 }
 
@@ -402,24 +578,31 @@ int run_convert(const ConvertArguments& args) {
 void add_convert_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ConvertArguments>();
   CLI::App* cmd = app.add_subcommand("convert", "Convert a part program into an ISO 14649 (STEP-NC) Part 21 file");
-  cmd->add_option("program", args->program, "Part program, or a CC1 Part 21 file to raise to --level cc2")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md); needed for a program")->check(CLI::ExistingFile);
-  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML, docs/formats/stock.md); needed for a program")->check(CLI::ExistingFile);
+  cmd->add_option("program", args->program, "Part program, or a CC1 Part 21 file to raise to --level cc2; - reads standard input")->required();
+  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md); needed for a program");
+  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML, docs/formats/stock.md); needed for a program");
   cmd->add_option("--dialect", args->dialect, "Program dialect")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));
   cmd->add_option("--heidenhain-feed-units", args->heidenhain_feed_units,
                   "Unit of Heidenhain F words (mm/s for FreeCAD's Heidenhain post; never guessed)")
       ->check(CLI::IsMember({"mm/min", "mm/s"}));
   cmd->add_option("--level", args->level, "Conformance class of the output")->check(CLI::IsMember({"cc1", "cc2"}));
-  cmd->add_option("-o,--output", args->output, "Part 21 file to write")->required();
+  cmd->add_option("-o,--output", args->output, "Part 21 file to write; - writes standard output")->required();
   cmd->add_option("--report", args->report, "Also write a JSON report (docs/formats/report.md)");
   cmd->add_option("--html", args->html, "Also write an HTML page: top view, toolpaths, features (--level cc2)");
   cmd->add_option("--security-plane", args->security_plane, "Security plane Z in mm (default: the highest rapid)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
+  cmd->add_flag("--strict", args->strict,
+                "A warning is an error: exit 1, nothing written (the interpreter refuses machine builder M codes, G43 "
+                "without tool lengths at their place)");
+  cmd->add_option("--machine-functions", args->machine_functions,
+                  "M codes that are the machine builder's machine functions (no motion), beyond the dialect's list: "
+                  "read with a warning")
+      ->delimiter(',');
   cmd->add_option("--max-seconds", args->max_seconds,
                   "Stop with an error (writing nothing) once the conversion has run this long (default: no limit)")
       ->check(CLI::NonNegativeNumber);
-  cmd->callback([args, &exit_code]() { exit_code = run_convert(*args); });
+  cmd->callback([args, cmd, &exit_code]() { exit_code = run_convert(*args, verbosity_of(*cmd)); });
 }
 
 }  // namespace ncbridge::cli

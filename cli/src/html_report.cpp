@@ -59,6 +59,11 @@ std::vector<sn::CartesianPoint> points_of(const sn::CompositeCurve& curve) {
       out.insert(out.end(), line->points.begin(), line->points.end());
       continue;
     }
+    if (const auto* spline = std::get_if<sn::BSplineCurve>(&segment)) {
+      const auto points = sn::bspline_polyline(*spline, 0.01);  // a drawing: a hundredth of a mm is plenty
+      out.insert(out.end(), points.begin(), points.end());
+      continue;
+    }
     const auto& arc = std::get<sn::TrimmedCircle>(segment);
     const auto& p = arc.position;
     const sn::Direction& r = p.ref_direction;
@@ -168,6 +173,13 @@ std::string html_report(const HtmlReportInput& in) {
       for (const auto& t : r->its_toolpath->its_list) paths.push_back({points_of(t.basiccurve), true, legend.size()});
       continue;
     }
+    if (const auto* probing = std::get_if<sn::WorkpieceProbing>(&e)) {  // the probe's travel, as a rapid
+      const auto& s = probing->start_position.location;
+      const auto& d = probing->its_direction;
+      const double travel = probing->expected_value.theoretical_size + probing->expected_value.upper_limit;
+      paths.push_back({{s, {s.x + d.x * travel, s.y + d.y * travel, s.z + d.z * travel}}, true, legend.size()});
+      continue;
+    }
     const auto& ws = std::get<sn::MachiningWorkingstep>(e);
     const auto& op = sn::machining_operation(project.operation(ws.its_operation));
     if (op.its_toolpath) {
@@ -257,8 +269,14 @@ std::string html_report(const HtmlReportInput& in) {
   }
   svg += "</svg>\n";
 
-  // Side panel.
+  // Side panel: setup warnings first, where they cannot be missed.
   std::string panel;
+  if (!in.setup_warnings.empty()) {
+    panel += "<div class=\"setup\"><h2>Check the setup (" + std::to_string(in.setup_warnings.size()) +
+             (in.setup_warnings.size() == 1 ? " warning" : " warnings") + ")</h2>\n<ul>\n";
+    for (const auto& warning : in.setup_warnings) panel += "<li>" + escape(warning) + "</li>\n";
+    panel += "</ul></div>\n";
+  }
   panel += "<h2>Features (" + std::to_string(cc2.features.size()) + ")</h2>\n<table><tr><th>id</th><th>type</th><th>centre</th>"
            "<th>z top / bottom</th><th>size</th><th>operations</th></tr>\n";
   for (std::size_t i = 0; i < cc2.features.size(); ++i) {
@@ -283,9 +301,10 @@ std::string html_report(const HtmlReportInput& in) {
   for (const auto& t : project.tools) {
     panel += "<tr><td>" + escape(t.its_id) + "</td><td>" + num(t.dimension.diameter) + "</td></tr>\n";
   }
-  panel += "</table>\n<h2>Warnings (" + std::to_string(in.warnings.size()) + ")</h2>\n<ul>\n";
+  panel += "</table>\n<h2>Warnings (" + std::to_string(in.setup_warnings.size() + in.warnings.size()) + ")</h2>\n<ul>\n";
+  for (const auto& warning : in.setup_warnings) panel += "<li>" + escape(warning) + "</li>\n";
   for (const auto& warning : in.warnings) panel += "<li>" + escape(warning) + "</li>\n";
-  if (in.warnings.empty()) panel += "<li>none</li>\n";
+  if (in.warnings.empty() && in.setup_warnings.empty()) panel += "<li>none</li>\n";
   panel += "</ul>\n";
   if (thin > 0) panel += "<p class=\"note\">Toolpaths thinned for display (" + std::to_string(total_points) + " points).</p>\n";
 
@@ -302,7 +321,8 @@ std::string html_report(const HtmlReportInput& in) {
           ".sw{display:inline-block;width:12px;height:12px;margin-right:6px;vertical-align:middle;border:2px solid transparent;box-sizing:border-box}\n"
           "svg{max-width:100%;height:auto}svg .label{font:bold 12px system-ui,sans-serif;text-anchor:middle;dominant-baseline:middle;"
           "paint-order:stroke;stroke:#fff;stroke-width:3px}svg .axis{font:12px system-ui,sans-serif;fill:#666}\n"
-          ".note{color:#666}\n</style>\n</head>\n<body>\n<main>\n<h1>" +
+          ".note{color:#666}.setup{border:2px solid #c0392b;background:#fdecea;padding:4px 10px;margin-bottom:8px}\n"
+          ".setup h2{color:#c0392b;margin-top:4px}\n</style>\n</head>\n<body>\n<main>\n<h1>" +
           escape(in.title) + " &#8212; top view</h1>\n" + svg + "</main>\n<aside>\n" + panel + "</aside>\n</body>\n</html>\n";
   return html;
 }

@@ -13,7 +13,8 @@ namespace ncbridge::cli {
 struct HtmlReportInput {
   std::string title;                  // the program or file converted
   const Cc2Output* cc2 = nullptr;     // features, ids and the CC2 workplan (toolpaths, tools)
-  std::vector<std::string> warnings;  // "where: message"
+  std::vector<std::string> setup_warnings;  // "where: message": the setup may be wrong (setup_checks.hpp)
+  std::vector<std::string> warnings;        // "where: message": everything else
 };
 
 std::string html_report(const HtmlReportInput& input);

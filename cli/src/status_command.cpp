@@ -25,6 +25,7 @@ namespace {
 struct StatusArguments {
   std::optional<std::uint32_t> domain;
   double listen_s = 1.5;
+  std::string controller;  // only this controller's captured runs
 };
 
 const char* state_name(wire::JobState s) {
@@ -37,6 +38,34 @@ const char* state_name(wire::JobState s) {
     case wire::JobState::Delivered: return "delivered";
   }
   return "?";
+}
+
+// A controller's captured runs (jobs "CONTROLLER/RUN"): converted (and the file's name), in
+// progress, aborted by the controller, or failed.
+int print_runs(const std::string& controller, const std::map<std::string, std::map<std::string, wire::JobStatus>>& jobs) {
+  const std::string prefix = controller + "/";
+  std::size_t n = 0;
+  for (const auto& [job, stages] : jobs) n += job.starts_with(prefix) ? 1 : 0;
+  std::printf("runs captured from %s: %zu\n", controller.c_str(), n);
+  for (const auto& [job, stages] : jobs) {
+    if (!job.starts_with(prefix)) continue;
+    std::string outcome = "in progress";
+    for (const auto& [stage, status] : stages) {
+      if (status.state == wire::JobState::Error) {
+        outcome = (status.message.find("run aborted") != std::string::npos ? "aborted: " : "ERROR: ") +
+                  status.where.to_string() + ": " + status.message;
+      }
+    }
+    const auto writer = stages.find(std::string(bus::kStageStepWriter));
+    if (outcome == "in progress" && writer != stages.end() &&
+        (writer->second.state == wire::JobState::Done || writer->second.state == wire::JobState::Delivered)) {
+      std::string file = job;
+      for (char& c : file) c = c == '/' ? '-' : c;
+      outcome = "converted: " + file + ".stp";
+    }
+    std::printf("  %s  %s\n", job.c_str(), outcome.c_str());
+  }
+  return 0;
 }
 
 int run_status(const StatusArguments& args) {
@@ -68,6 +97,7 @@ int run_status(const StatusArguments& args) {
       }
     }
   }
+  if (!args.controller.empty()) return print_runs(args.controller, jobs);
   std::printf("workers (DDS domain %u):\n", participant.domain_id());
   for (std::string_view stage : {bus::kStageInterpreter, bus::kStageCc1Builder, bus::kStageFeatureRecognizer,
                                  bus::kStageStepWriter}) {
@@ -103,6 +133,7 @@ void add_status_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("status", "List the DDS services' workers and jobs");
   cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));
   cmd->add_option("--listen", args->listen_s, "Seconds to listen before printing (default 1.5)");
+  cmd->add_option("--controller", args->controller, "Only the runs captured from this controller, and their files");
   cmd->callback([args, &exit_code]() { exit_code = run_status(*args); });
 }
 

@@ -3,8 +3,10 @@
 // Several programs (files, directories of programs, or a --list file of "PROGRAM [TOOLS STOCK]"
 // lines) go out from one DDS participant, all published at once, then awaited together: a bulk
 // load pays discovery once. With --wait it shows the stages' progress (one job) or each job as it
-// ends (several), and writes each job's Part 21 file (-o for one job, --output-dir for several).
-// The bus is the one CYCLONEDDS_URI and NCBRIDGE_DDS_DOMAIN name (or --domain).
+// ends (several), and writes each job's Part 21 file (-o for one job, "-" for standard output;
+// --output-dir for several, created when missing). Every output path is checked before a job is
+// published; each job's file appears whole when the job is done (output_files.hpp), or not at
+// all. The bus is the one CYCLONEDDS_URI and NCBRIDGE_DDS_DOMAIN name (or --domain).
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
@@ -23,13 +25,15 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "errors.hpp"
+#include "input_files.hpp"
+#include "output_files.hpp"
 #include "ncbridge/bus/participant.hpp"
 #include "ncbridge/bus/writer.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/service/job_watch.hpp"
 #include "ncbridge/setup/stock.hpp"
 #include "ncbridge/setup/tool_list.hpp"
-#include "ncbridge/step_writer/atomic_file.hpp"
 #include "ncbridge/wire/job.hpp"
 
 namespace ncbridge::cli {
@@ -69,9 +73,11 @@ wire::Dialect dialect_of(const std::string& name) {
   return wire::Dialect::Rs274Ngc;
 }
 
-std::string read_text(const std::string& path, const char* what) {
+std::string read_text(const std::string& path, std::string_view what) {
+  const Input input = open_input(path, what);
+  if (input.text) return *input.text;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0}, std::string("cannot open ") + what);
+  if (!in) throw InputError({path, 0, 0}, "cannot open (" + std::string(what) + ")");
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
@@ -89,7 +95,7 @@ bool is_program_file(const fs::path& p) {
 std::vector<Submission> submissions(const SubmitArguments& args) {
   std::vector<Submission> out;
   for (const std::string& p : args.programs) {
-    if (!fs::is_directory(p)) {
+    if (p == "-" || !fs::is_directory(p)) {
       out.push_back({p, args.tools, args.stock});
       continue;
     }
@@ -104,7 +110,7 @@ std::vector<Submission> submissions(const SubmitArguments& args) {
   if (!args.list.empty()) {
     const fs::path base = fs::path(args.list).parent_path();
     const auto resolve = [&base](const std::string& p) { return fs::path(p).is_absolute() ? p : (base / p).string(); };
-    std::istringstream lines(read_text(args.list, "list file"));
+    std::istringstream lines(read_text(args.list, "--list"));
     std::uint32_t number = 0;
     for (std::string line; std::getline(lines, line);) {
       ++number;
@@ -117,10 +123,16 @@ std::vector<Submission> submissions(const SubmitArguments& args) {
       out.push_back({resolve(w[0]), w.size() == 3 ? resolve(w[1]) : args.tools, w.size() == 3 ? resolve(w[2]) : args.stock});
     }
   }
+  std::size_t from_stdin = 0;
   for (const Submission& s : out) {
     if (s.tools.empty() || s.stock.empty())
-      throw InputError({s.program, 0, 0}, "no tool list or stock for this program (--tools, --stock, or the list's columns)");
+      throw UsageError(s.program + ": no tool list or stock for this program (--tools, --stock, or the list's columns)");
+    if (s.program == "-") ++from_stdin;
+    else require_input_file(s.program, "program");
+    require_input_file(s.tools, "--tools");
+    require_input_file(s.stock, "--stock");
   }
+  if (from_stdin > 1) throw UsageError("standard input (-) can be one program only");
   return out;
 }
 
@@ -142,19 +154,24 @@ const char* state_name(wire::JobState s) {
   return "?";
 }
 
-void print_error(const wire::JobStatus& e) {
-  std::fprintf(stderr, "%s: error: %s (%s)\n", e.where.to_string().c_str(), e.message.c_str(), e.stage.c_str());
-}
+void print_job_error(const wire::JobStatus& e) { print_error(e.where, e.message + " (" + e.stage + ")"); }
+
+std::string stem_of(const std::string& program) { return program == "-" ? "stdin" : fs::path(program).stem().string(); }
 
 int run_submit(const SubmitArguments& args) {
+  if (!args.list.empty()) require_input_file(args.list, "--list");
   const std::vector<Submission> list = submissions(args);
-  if (list.empty()) throw CLI::ValidationError("submit", "no program to submit");
+  if (list.empty()) throw UsageError("no program to submit");
   const bool single = list.size() == 1;
-  if (!single && !args.job_id.empty()) throw CLI::ValidationError("--job-id", "only with one program");
-  if (!single && !args.output.empty()) throw CLI::ValidationError("-o", "only with one program: use --output-dir");
+  if (!single && !args.job_id.empty()) throw UsageError("--job-id: only with one program");
+  if (!single && !args.output.empty()) throw UsageError("-o: only with one program (several: --output-dir)");
+  if (!args.output.empty() && !args.output_dir.empty()) throw UsageError("-o and --output-dir: give one");
+  if (!args.wait && (!args.output.empty() || !args.output_dir.empty()))
+    throw UsageError("-o and --output-dir need --wait (the files are written when the jobs end)");
   if (args.wait && single && args.output.empty() && args.output_dir.empty())
-    throw CLI::RequiredError("--output or --output-dir (with --wait)");
-  if (args.wait && !single && args.output_dir.empty()) throw CLI::RequiredError("--output-dir (with --wait and several programs)");
+    throw UsageError("--wait needs -o or --output-dir");
+  if (args.wait && !single && args.output_dir.empty()) throw UsageError("--wait with several programs needs --output-dir");
+  const fs::path output_dir = args.output_dir.empty() ? fs::path() : prepare_output_directory(args.output_dir, "--output-dir");
 
   std::vector<std::string> subroutine_dirs;
   std::stringstream dirs(args.subroutine_path);
@@ -164,23 +181,38 @@ int run_submit(const SubmitArguments& args) {
   std::random_device seed;
   std::mt19937 random(seed());
   std::vector<wire::Job> jobs;
-  std::map<std::string, std::string> output_of;  // job id -> file to write
+  // Each job's file, checked now; it appears when its job is done.
+  struct JobOutput {
+    OutputSet set;
+    OutputFile* file = nullptr;
+  };
+  std::map<std::string, JobOutput> output_of;
   std::set<std::string> output_names;
+  bool to_stdout = false;
   for (const Submission& s : list) {
     wire::Job job;
-    job.job_id = single && !args.job_id.empty() ? args.job_id : new_job_id(s.program, random);
-    job.file_name = s.program;
-    job.program_text = read_text(s.program, "program file");
+    job.job_id = single && !args.job_id.empty() ? args.job_id : new_job_id(stem_of(s.program), random);
+    job.file_name = s.program == "-" ? "<stdin>" : s.program;
+    job.program_text = read_text(s.program, "program");
     job.dialect = dialect_of(args.dialect);
     job.tools = setup::read_tool_list(s.tools).tools();
     job.stock = setup::read_stock(s.stock);
     job.level = args.level == "cc2" ? wire::ConformanceClass::Cc2 : wire::ConformanceClass::Cc1;
-    job.output_name = single && !args.output.empty() ? fs::path(args.output).filename().string()
-                                                     : fs::path(s.program).stem().string() + ".stp";
+    job.output_name = stem_of(s.program) + ".stp";
+    if (args.wait) {
+      JobOutput& out = output_of[job.job_id];
+      if (!args.output.empty()) {
+        out.file = &out.set.add(args.output, "-o");
+        if (!out.file->file_name().empty()) job.output_name = out.file->file_name();
+        to_stdout = out.file->is_stream();
+      } else {
+        out.file = &out.set.add((output_dir / job.output_name).string(), "--output-dir");
+      }
+      for (const std::string* input : {&s.program, &s.tools, &s.stock}) out.set.protect(*input);
+    }
     if (!output_names.insert(job.output_name).second)
-      throw InputError({s.program, 0, 0}, "two programs would both be written as " + job.output_name);
+      throw UsageError(s.program + ": two programs would both be written as " + job.output_name);
     job.subroutine_path = subroutine_dirs;
-    output_of[job.job_id] = !args.output.empty() ? args.output : (fs::path(args.output_dir) / job.output_name).string();
     jobs.push_back(std::move(job));
   }
 
@@ -193,15 +225,16 @@ int run_submit(const SubmitArguments& args) {
   bus::Writer programs(participant, bus::Topic::Programs);
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(args.timeout_s * 1000));
   if (!programs.wait_for_readers(1, std::min(timeout, std::chrono::milliseconds(10'000)))) {
-    std::fprintf(stderr, "ncbridge submit: no interpreter service on DDS domain %u (is `ncbridge up` running?)\n",
-                 participant.domain_id());
-    return 3;
+    throw ServiceUnavailable("no interpreter service on DDS domain " + std::to_string(participant.domain_id()) +
+                             " (is `ncbridge up` running, with the CYCLONEDDS_URI it printed?)");
   }
+  // The job ids go to standard output, unless the result does.
+  std::FILE* ids_to = to_stdout ? stderr : stdout;
   for (const wire::Job& job : jobs) {
     programs.write(job.job_id, "", 0, 0, true, wire::encode_job(job));
-    std::printf("%s\n", job.job_id.c_str());
+    std::fprintf(ids_to, "%s\n", job.job_id.c_str());
   }
-  std::fflush(stdout);
+  std::fflush(ids_to);
   jobs.clear();  // the writer holds them now
   if (!args.wait) {
     // A job's only copy is this process's writer until an interpreter has it.
@@ -209,25 +242,27 @@ int run_submit(const SubmitArguments& args) {
     return 0;
   }
   const bool tty = isatty(STDERR_FILENO) != 0;
-  int failed = 0;
-  // Each file goes to its temporary as its pieces come, and is renamed into place when whole.
-  std::map<std::string, std::unique_ptr<step_writer::AtomicFile>> writing;
+  int failed = 0, not_written = 0;
+  // Each file goes to its temporary as its pieces come, and appears when whole.
   const auto on_piece = [&](const std::string& job_id, const wire::Part21File& piece) {
-    std::unique_ptr<step_writer::AtomicFile>& file = writing[job_id];
-    if (!file) file = std::make_unique<step_writer::AtomicFile>(output_of.at(job_id));
-    file->write(piece.content);
+    output_of.at(job_id).file->write(piece.content);
   };
   const auto on_over = [&](const std::string& job_id, service::JobOutcome outcome) {
     if (tty && single) std::fprintf(stderr, "\r\033[K");
-    const auto file = writing.find(job_id);
+    const auto out = output_of.find(job_id);
     if (outcome.error) {
-      print_error(*outcome.error);
+      print_job_error(*outcome.error);
       ++failed;
-      if (file != writing.end()) writing.erase(file);  // removes the part written
+      output_of.erase(out);  // removes the part written
     } else {
-      file->second->commit();
-      writing.erase(file);
-      if (!single) std::fprintf(stderr, "%s: done, %s\n", job_id.c_str(), output_of.at(job_id).c_str());
+      try {
+        out->second.set.commit();
+        if (!single) std::fprintf(stderr, "%s: done, %s\n", job_id.c_str(), out->second.file->display_name().c_str());
+      } catch (const OutputError& e) {
+        print_error({e.path().string(), 0, 0}, e.message());
+        ++not_written;
+      }
+      output_of.erase(out);
     }
     programs.unregister(job_id, "");
   };
@@ -238,10 +273,11 @@ int run_submit(const SubmitArguments& args) {
     std::fprintf(stderr, "%s", tty ? "" : "\n");
   };
   const std::set<std::string> late = watch.wait_all(timeout, on_piece, on_over, on_status);
-  for (const std::string& id : late) std::fprintf(stderr, "ncbridge submit: job %s not done after %.0f s\n", id.c_str(), args.timeout_s);
+  for (const std::string& id : late) print_error("job " + id + " not done after " + std::to_string(static_cast<long long>(args.timeout_s)) + " s (--timeout)");
   if (!single) std::fprintf(stderr, "%zu jobs: %zu done, %d failed, %zu not done\n", ids.size(), ids.size() - failed - late.size(), failed, late.size());
-  if (!late.empty()) return 3;
-  return failed > 0 ? 1 : 0;
+  if (!late.empty()) return exit_status::service_unavailable;
+  if (not_written > 0) return exit_status::output_error;
+  return failed > 0 ? exit_status::input_error : exit_status::ok;
 }
 
 }  // namespace
@@ -249,16 +285,15 @@ int run_submit(const SubmitArguments& args) {
 void add_submit_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<SubmitArguments>();
   CLI::App* cmd = app.add_subcommand("submit", "Submit part programs to the running DDS services");
-  cmd->add_option("programs", args->programs, "Part programs, or folders of them")->check(CLI::ExistingPath);
-  cmd->add_option("--list", args->list, "File of \"PROGRAM [TOOLS STOCK]\" lines to submit too")->check(CLI::ExistingFile);
-  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML)")->check(CLI::ExistingFile);
-  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML)")->check(CLI::ExistingFile);
+  cmd->add_option("programs", args->programs, "Part programs, or folders of them; - reads one from standard input");
+  cmd->add_option("--list", args->list, "File of \"PROGRAM [TOOLS STOCK]\" lines to submit too");
+  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML)");
+  cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML)");
   cmd->add_option("--dialect", args->dialect, "Program dialect")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));
   cmd->add_option("--level", args->level, "Conformance class asked for")->check(CLI::IsMember({"cc1", "cc2"}));
-  cmd->add_option("-o,--output", args->output, "Part 21 file to write (one program, with --wait); its name is FILE_NAME.name");
-  cmd->add_option("--output-dir", args->output_dir, "Folder for the Part 21 files (with --wait), named PROGRAM-STEM.stp")
-      ->check(CLI::ExistingDirectory);
+  cmd->add_option("-o,--output", args->output, "Part 21 file to write (one program, with --wait; - for standard output)");
+  cmd->add_option("--output-dir", args->output_dir, "Directory for the Part 21 files (with --wait), named PROGRAM-STEM.stp; created when missing");
   cmd->add_option("--job-id", args->job_id, "Job id, one program only (default: program name + random suffix)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
   cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));

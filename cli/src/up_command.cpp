@@ -22,6 +22,9 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "errors.hpp"
+#include "input_files.hpp"
+#include "output_files.hpp"
 #include "ncbridge/bus/config.hpp"
 #include "ncbridge/service/shutdown_signal.hpp"
 
@@ -91,7 +94,7 @@ void stop_all(std::vector<Child>& children) {
       if (waitpid(c.pid, nullptr, WNOHANG) == c.pid) {
         c.pid = 0;
       } else if (std::chrono::steady_clock::now() > deadline) {
-        std::fprintf(stderr, "ncbridge up: %s did not stop, killing it\n", c.name.c_str());
+        print_warning({}, c.name + " did not stop, killing it");
         kill(c.pid, SIGKILL);
         waitpid(c.pid, nullptr, 0);
         c.pid = 0;
@@ -103,6 +106,11 @@ void stop_all(std::vector<Child>& children) {
 }
 
 int run_up(const UpArguments& args) {
+  if (!args.live_tools.empty()) require_input_file(args.live_tools, "--live-tools");
+  if (!args.live_stock.empty()) require_input_file(args.live_stock, "--live-stock");
+  if (!args.config.empty() && !args.config.starts_with("file://") && !args.config.starts_with("<"))
+    require_input_file(args.config, "--cyclonedds-config");
+  if (!args.output_dir.empty()) prepare_output_directory(args.output_dir, "--output-dir");
   service::ShutdownSignal shutdown;
   const std::filesystem::path bin = own_directory();
   bus::BusConfig config = bus::config_from_environment();
@@ -156,8 +164,8 @@ int run_up(const UpArguments& args) {
     for (Child& c : children) {
       int status = 0;
       if (c.pid > 0 && waitpid(c.pid, &status, WNOHANG) == c.pid) {
-        std::fprintf(stderr, "ncbridge up: %s (pid %d) exited (%s %d)\n", c.name.c_str(), c.pid,
-                     WIFEXITED(status) ? "status" : "signal", WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status));
+        print_error(c.name + " (pid " + std::to_string(c.pid) + ") exited (" + (WIFEXITED(status) ? "status " : "signal ") +
+                    std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status)) + ")");
         c.pid = 0;
         exit_code = 1;
       }
@@ -177,9 +185,9 @@ void add_up_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--workers", args->workers, "Workers per stage")->check(CLI::Range(1, 16));
   cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));
   cmd->add_option("--cyclonedds-config", args->config, "Cyclone configuration file (default: loopback, 1 s lease)");
-  cmd->add_option("--output-dir", args->output_dir, "The step writers also write each file here")->check(CLI::ExistingDirectory);
-  cmd->add_option("--live-tools", args->live_tools, "Tool list for live-capture runs (controller-sim)")->check(CLI::ExistingFile);
-  cmd->add_option("--live-stock", args->live_stock, "Stock for live-capture runs")->check(CLI::ExistingFile);
+  cmd->add_option("--output-dir", args->output_dir, "The step writers also write each file here (created when missing)");
+  cmd->add_option("--live-tools", args->live_tools, "Tool list for live-capture runs (controller-sim)");
+  cmd->add_option("--live-stock", args->live_stock, "Stock for live-capture runs");
   cmd->add_option("--retain-jobs", args->retain_jobs, "Each worker keeps its last N finished jobs on the bus (default 1000)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--retain-for", args->retain_for, "... and none older than this many seconds (default 3600)")

@@ -28,14 +28,20 @@ Stock parse_stock(std::string_view text, const std::string& file) {
   const YAML::Node root = parse_yaml_document(text, file);
   if (!root.IsMap()) throw InputError(location_of(root, file), "stock: expected an object");
   double scale = 1.0;
+  LengthUnits units_given = LengthUnits::Millimeters;
   if (auto units = optional_string(root, "units", file)) {
-    if (*units == "inch" || *units == "in" || *units == "inches") scale = 25.4;
-    else if (*units != "mm") throw InputError(location_of(root["units"], file), "stock: units must be \"mm\" or \"inch\"");
+    if (*units == "inch" || *units == "in" || *units == "inches") {
+      scale = 25.4;
+      units_given = LengthUnits::Inches;
+    } else if (*units != "mm") {
+      throw InputError(location_of(root["units"], file), "stock: units must be \"mm\" or \"inch\"");
+    }
   }
   if (auto shape = optional_string(root, "shape", file); shape && *shape != "block") {
     throw InputError(location_of(root["shape"], file), "stock: only shape \"block\" is supported, not \"" + *shape + "\"");
   }
   Stock s;
+  s.file_units = units_given;
   s.min = read_point(root, "min", file, scale);
   s.max = read_point(root, "max", file, scale);
   for (int i = 0; i < 3; ++i) {

@@ -50,8 +50,35 @@ wire::Job job_from_program(const service::JobInput& input) {
   return job;
 }
 
+// The tools a captured run is read with: the controller's own tool table when its RUN_START
+// carries one (diameters and lengths as the machine uses them), each tool's type and name from
+// the --live-tools list where it has the same number (a LinuxCNC table has no tool types).
+std::vector<setup::Tool> run_tools(const wire::ExecutedBlock& start, const std::vector<setup::Tool>& live,
+                                   const std::string& job_id) {
+  if (start.tool_table.empty()) return live;
+  const setup::ToolList table = setup::parse_linuxcnc_tool_table(
+      start.tool_table, start.tool_table_inch ? setup::LengthUnits::Inches : setup::LengthUnits::Millimeters,
+      "<tool table of run " + job_id + ">");
+  std::vector<setup::Tool> tools;
+  for (setup::Tool t : table.tools()) {
+    const auto named = std::find_if(live.begin(), live.end(), [&](const setup::Tool& l) { return l.number == t.number; });
+    if (named != live.end()) {
+      t.name = named->name;
+      t.type = named->type;
+      t.corner_radius = named->corner_radius;
+      t.flute_length = named->flute_length;
+      t.flutes = named->flutes;
+      t.point_angle = named->point_angle;
+      t.thread_pitch = named->thread_pitch;
+    }
+    tools.push_back(std::move(t));
+  }
+  return tools;
+}
+
 // A run of executed blocks becomes a program: the blocks in seq order, one per line, so source
-// lines are block numbers of the run (1 = the first executed block).
+// lines are block numbers of the run (1 = the first executed block). A run the controller
+// stopped before the program's end is an error naming why: a half run never becomes a file.
 wire::Job job_from_run(const service::JobInput& input, const wire::Job& live) {
   wire::Job job = live;
   job.job_id = input.job_id;
@@ -61,10 +88,19 @@ wire::Job job_from_run(const service::JobInput& input, const wire::Job& live) {
   }
   job.output_name = name + ".stp";
   job.file_name = input.job_id;
+  std::uint64_t blocks = 0;
   for (const std::string& payload : input.payloads) {
     const wire::ExecutedBlock block = wire::decode_block(payload);
-    if (block.kind == wire::BlockKind::RunStart && !block.text.empty()) job.file_name = block.text;
+    if (block.kind == wire::BlockKind::RunStart) {
+      if (!block.text.empty()) job.file_name = block.text;
+      job.tools = run_tools(block, live.tools, input.job_id);
+    }
+    if (block.kind == wire::BlockKind::RunEnd && block.aborted) {
+      throw InputError({job.file_name, 0, 0}, "run aborted by the controller after " + std::to_string(blocks) +
+                                                  " blocks (" + block.reason + "): no file is made of a half run");
+    }
     if (block.kind != wire::BlockKind::Block) continue;
+    ++blocks;
     job.program_text += block.text;
     job.program_text += '\n';
   }

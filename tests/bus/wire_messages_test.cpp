@@ -57,6 +57,16 @@ TEST(WireBlock, RoundTrip) {
   ExecutedBlock start = b;
   start.kind = BlockKind::RunStart;
   EXPECT_EQ(decode_block(encode_block(start)).kind, BlockKind::RunStart);
+  start.program_text = "G21\nG0 X1\nM2\n";
+  start.tool_table = "T1 P1 Z1.5 D0.25\n";
+  start.tool_table_inch = true;
+  start.start_line = 12;
+  EXPECT_EQ(decode_block(encode_block(start)), start);
+  ExecutedBlock end = b;
+  end.kind = BlockKind::RunEnd;
+  end.aborted = true;
+  end.reason = "the machine was e-stopped";
+  EXPECT_EQ(decode_block(encode_block(end)), end);
   EXPECT_THROW(decode_block(std::string("\x20\x05", 2)), InputError);  // kind = 5
 }
 

@@ -288,7 +288,7 @@ TEST(Cc2Convert, Cc1FileWithoutRawpieceNeedsStockAndNonsenseInputIsAnErrorWithIt
   const CommandResult no_tools = run_ncbridge("convert '" + (kShared / "corpus" / "paper" / "face_mill.ngc").string() + "' --level cc2 -o '" +
                                     (dir / "out.stp").string() + "'",
                                 dir);
-  EXPECT_EQ(no_tools.exit_code, 1);
+  EXPECT_EQ(no_tools.exit_code, 2);  // a usage error (docs/cli.md)
   EXPECT_NE(no_tools.err.find("needs --tools and --stock"), std::string::npos) << no_tools.err;
 }
 

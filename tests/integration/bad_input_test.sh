@@ -18,7 +18,7 @@ if timeout 60 "$BIN/ncbridge" submit "$WORK/bad.ngc" --tools "$TOOLS_PAPER" --st
      --wait -o "$WORK/bad.stp" > "$WORK/submit-bad.log" 2>&1; then
   fail "a malformed program was accepted"
 fi
-grep -Eq "bad.ngc:3:[0-9]+: error: .*\(interpreter\)" "$WORK/submit-bad.log" || fail "no located error for the bad program: $(cat "$WORK/submit-bad.log")"
+grep -Eq "ncbridge: error: .*bad.ngc:3:[0-9]+: .*\(interpreter\)" "$WORK/submit-bad.log" || fail "no located error for the bad program: $(cat "$WORK/submit-bad.log")"
 
 timeout 30 "$INJECT" truncated-job bad-truncated-job || fail "inject truncated-job"
 timeout 30 "$INJECT" truncated-batch bad-truncated-batch || fail "inject truncated-batch"

@@ -36,7 +36,7 @@ timeout 240 "$BIN/ncbridge" submit --list "$WORK/list" "$WORK/folder" --tools "$
 [[ $rc == 1 ]] || fail "bulk submit with one bad program exited $rc, not 1: $(tail -n 5 "$WORK/submit.log")"
 [[ $(wc -l < "$WORK/submit.out") == 61 ]] || fail "bulk submit printed $(wc -l < "$WORK/submit.out") job ids, not 61"
 grep -q "^61 jobs: 60 done, 1 failed, 0 not done" "$WORK/submit.log" || fail "summary: $(tail -n 1 "$WORK/submit.log")"
-grep -Eq "zz_bad.ngc:3:[0-9]+: error: .*\(interpreter\)" "$WORK/submit.log" || fail "no located error for the bad program"
+grep -Eq "ncbridge: error: .*zz_bad.ngc:3:[0-9]+: .*\(interpreter\)" "$WORK/submit.log" || fail "no located error for the bad program"
 
 same=0
 while read -r prog tools stock; do

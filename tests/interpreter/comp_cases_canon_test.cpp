@@ -69,8 +69,8 @@ TEST_P(CompCaseThroughCanon, ListingMatchesRs274) {
   const auto block = std::find(lines.begin(), lines.end(), error[1]);
   ASSERT_NE(block, lines.end()) << "the block rs274 names is not in the program: " << error[1];
   const std::string where = program.string() + ":" + std::to_string(block - lines.begin() + 1) + ":";
-  EXPECT_NE(run.err.find(where), std::string::npos) << "expected the error at " << where << ", got: " << run.err;
-  EXPECT_NE(run.err.find("error: " + error[0]), std::string::npos) << "expected: " << error[0] << "\ngot: " << run.err;
+  EXPECT_NE(run.err.find("ncbridge: error: " + where), std::string::npos) << "expected the error at " << where << ", got: " << run.err;
+  EXPECT_NE(run.err.find(": " + error[0]), std::string::npos) << "expected: " << error[0] << "\ngot: " << run.err;
 }
 
 INSTANTIATE_TEST_SUITE_P(Rs274, CompCaseThroughCanon, ::testing::ValuesIn(case_names()),

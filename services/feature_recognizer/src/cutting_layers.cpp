@@ -70,7 +70,7 @@ void cut_into_passes(const std::vector<ToolpathWorkingstep>& workingsteps, doubl
     at = ws.start;
     for (const auto& move : ws.moves) {
       if (!finite(move.end) || !std::isfinite(move.center_x) || !std::isfinite(move.center_y)) {
-        throw InputError({"", move.source_line, 0}, "workingstep " + std::to_string(w) +
+        throw InputError({"", move.source_line, 1}, "workingstep " + std::to_string(w) +
                                                         ": a move has a coordinate that is not a finite number");
       }
       if (move.kind == MoveKind::Rapid) {
@@ -318,7 +318,8 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
       return;
     }
     if (ws.tool.diameter <= 0) {
-      throw InputError({"", 0, 0}, "workingstep " + std::to_string(pass.workingstep) + ": tool T" +
+      const std::uint32_t line = ws.moves.empty() ? 0 : ws.moves.front().source_line;
+      throw InputError({"", line, 1}, "workingstep " + std::to_string(pass.workingstep) + ": tool T" +
                                        std::to_string(ws.tool.number) +
                                        " has no diameter, so its cutting area is unknown");
     }

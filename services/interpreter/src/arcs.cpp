@@ -87,7 +87,7 @@ void Executor::arc(const BlockCommand& b, int motion, const Pose& end) {
   } else {
     bool has_first = b.has(static_cast<char>(ax.first_letter - 'A' + 'a'));
     bool has_second = b.has(static_cast<char>(ax.second_letter - 'A' + 'a'));
-    if (!has_first && !has_second) {
+    if (!has_first && !has_second && !b.has_polar()) {
       const char* names[] = {"X and Y words missing for arc in XY plane", "Y and Z words missing for arc in YZ plane",
                              "X and Z words missing for arc in XZ plane"};
       fail(b.g_column[kGMotion], names[s_.plane == Plane::XY ? 0 : s_.plane == Plane::YZ ? 1 : 2]);

@@ -19,7 +19,7 @@ enum GroupG : int {
 };
 // M-code groups.
 enum GroupM : int {
-  kMStop = 4, kMToolChange = 6, kMSpindle = 7, kMCoolant = 8, kMOverride = 9, kMUser = 10,
+  kMStop = 4, kMInput = 5, kMToolChange = 6, kMSpindle = 7, kMCoolant = 8, kMOverride = 9, kMUser = 10,
   kMGroupCount = 11
 };
 
@@ -34,8 +34,20 @@ struct BlockCommand {
   std::array<std::uint32_t, kMGroupCount> m_column{};
   bool mist_on = false, flood_on = false;  // M7 and M8 may share a block
 
+  // Polar coordinates (`@` radius, `^` angle in degrees; LinuxCNC allows each more than once,
+  // the last one counts).
+  bool has_polar_radius = false, has_polar_angle = false;
+  double polar_radius = 0, polar_angle = 0;
+  std::uint32_t polar_radius_column = 0, polar_angle_column = 0;
+  bool has_polar() const { return has_polar_radius || has_polar_angle; }
+  std::uint32_t polar_column() const { return has_polar_radius ? polar_radius_column : polar_angle_column; }
+
   std::string_view comment;       // the last plain comment of the line
   bool comment_is_message = false;
+  // What the comment asks for beyond a COMMENT call (set by the control-flow runner for
+  // LinuxCNC's active comments; `comment` then holds the text to print or log).
+  enum class CommentAction : std::uint8_t { Comment, Print, Log, LogOpen, LogAppend, LogClose, Nothing };
+  CommentAction comment_action = CommentAction::Comment;
   std::uint32_t line = 0;
 
   bool has(char letter) const { return (present >> (letter - 'a')) & 1u; }

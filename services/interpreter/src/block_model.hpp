@@ -51,7 +51,8 @@ struct ExprNode {
 };
 
 struct Word {
-  char letter = 0;                            // lower case; 0 when `address` is used
+  char letter = 0;                            // lower case, '@'/'^' (polar radius/angle);
+                                              // 0 when `address` is used
   std::uint32_t address_begin = 0, address_length = 0;  // multi-letter address in Block::names
   ExprRef value = kNoExpr;
   std::uint32_t column = 0;

@@ -11,6 +11,7 @@ using namespace canonical;
 
 namespace {
 constexpr double kPeckRapidDeltaInch = 0.010;  // LinuxCNC G83_RAPID_DELTA
+constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
 }
 
 void Executor::canned_cycle(const BlockCommand& b, int motion) {
@@ -71,14 +72,26 @@ void Executor::canned_cycle(const BlockCommand& b, int motion) {
     s_.cycle_initial_level_valid = true;
   }
   double aa, bb, aa_inc = 0, bb_inc = 0, r, cc;
+  // Polar coordinates (XY plane only): in G90 the hole position, in G91 a radius and an angle
+  // added before each repeat (LinuxCNC convert_cycle_xy, CYCLE_MACRO).
+  double radius_inc = 0, angle_inc = 0;
   if (s_.distance == DistanceMode::Absolute) {
     r = r_word;
     cc = cc_word;
-    aa = b.has(la) ? b.get(la) : s_.position.*fa;
-    bb = b.has(lb) ? b.get(lb) : s_.position.*fb;
+    if (b.has_polar()) {
+      const double radius = b.has_polar_radius ? b.polar_radius : std::hypot(s_.position.y, s_.position.x);
+      const double theta = b.has_polar_angle ? b.polar_angle * kRadiansPerDegree : std::atan2(s_.position.y, s_.position.x);
+      aa = radius * std::cos(theta);
+      bb = radius * std::sin(theta);
+    } else {
+      aa = b.has(la) ? b.get(la) : s_.position.*fa;
+      bb = b.has(lb) ? b.get(lb) : s_.position.*fb;
+    }
   } else {
     if (b.has(la)) aa_inc = b.get(la);
     if (b.has(lb)) bb_inc = b.get(lb);
+    if (b.has_polar_radius) radius_inc = b.polar_radius;
+    if (b.has_polar_angle) angle_inc = b.polar_angle * kRadiansPerDegree;
     r = r_word + old_cc;
     cc = r + cc_word;
     aa = s_.position.*fa;
@@ -139,8 +152,30 @@ void Executor::canned_cycle(const BlockCommand& b, int motion) {
   tag.p = p;
   tag.k = k;
   tag.repeat = static_cast<std::uint32_t>(repeats);
+  // G91 polar steps: each hole is the last one turned by the angle and pushed out by the radius.
+  auto turn_polar = [&](double& a, double& bv) {
+    if (radius_inc != 0) {
+      if (a == 0 && bv == 0) {
+        fail(b.polar_radius_column, "Incremental motion with polar coordinates is indeterminate when at the origin");
+      }
+      const double theta = std::atan2(bv, a);
+      const double radius = std::hypot(bv, a) + radius_inc;
+      a = radius * std::cos(theta);
+      bv = radius * std::sin(theta);
+    }
+    if (angle_inc != 0) {
+      if (a == 0 && bv == 0) {
+        fail(b.polar_angle_column, "Incremental motion with polar coordinates is indeterminate when at the origin");
+      }
+      const double theta = std::atan2(bv, a) + angle_inc;
+      const double radius = std::hypot(bv, a);
+      a = radius * std::cos(theta);
+      bv = radius * std::sin(theta);
+    }
+  };
   tag.x = aa + aa_inc;
   tag.y = bb + bb_inc;
+  turn_polar(tag.x, tag.y);
   tag.cycle_id = s_.cycle_count + 1;
 
   auto at = [&](double a, double bv, double c) {
@@ -170,6 +205,7 @@ void Executor::canned_cycle(const BlockCommand& b, int motion) {
   for (int repeat = repeats; repeat > 0; --repeat) {
     aa += aa_inc;
     bb += bb_inc;
+    turn_polar(aa, bb);
     tag.cycle_id = ++s_.cycle_count;
     tag.x = aa;
     tag.y = bb;

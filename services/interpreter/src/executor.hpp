@@ -60,6 +60,11 @@ class Executor final : public ComputedParameters {
 
  private:
   [[noreturn]] void fail(std::uint32_t column, const std::string& message) const;
+ public:
+  // A warning about the block being run (Options::warning); with Options::strict an error.
+  void warn(std::uint32_t column, const std::string& message) const;
+
+ private:
 
   // executor.cpp
   void check_block(const BlockCommand& b);
@@ -68,13 +73,14 @@ class Executor final : public ComputedParameters {
   void do_feed_rate(const BlockCommand& b);
   void do_speed(const BlockCommand& b);
   void do_dwell(const BlockCommand& b);
-  void do_plane(int g);
+  void do_plane(const BlockCommand& b, int g);
   void do_units(int g);
   void do_control_mode(const BlockCommand& b, int g);
   void do_distance_mode(int g);
   void do_retract_mode(int g);
   void do_overrides(const BlockCommand& b);
   void do_coolant(const BlockCommand& b);
+  void do_wait_on_input(const BlockCommand& b);
   void do_cutter_comp(const BlockCommand& b, int g);
   double comp_radius_of_tool(const BlockCommand& b, int g);
 
@@ -96,13 +102,14 @@ class Executor final : public ComputedParameters {
   const ToolEntry* tool_entry(int number) const { return number == 0 ? nullptr : tools_.find(number); }
 
   // offsets.cpp
-  void do_coordinate_system(int g);
+  void do_coordinate_system(int g, std::uint32_t column);
   void do_g10(const BlockCommand& b);
   void do_g10_tool(const BlockCommand& b, int l);
   void do_home(const BlockCommand& b, int g);
   void do_axis_offsets(const BlockCommand& b, int g);
   void apply_origin_change(const canonical::Pose& old_total_mm);
   canonical::Pose origin_mm() const;  // g5x + g92 (when active)
+  canonical::Pose current_in_system(int system) const;  // LinuxCNC find_current_in_system
   void emit_g5x();
   void emit_g92();
   void write_parameters();
@@ -111,11 +118,20 @@ class Executor final : public ComputedParameters {
   // motion.cpp
   void do_motion(const BlockCommand& b, int motion, bool g53);
   canonical::Pose find_end(const BlockCommand& b, bool g53) const;
+  canonical::Pose polar_end(const BlockCommand& b, canonical::Pose end, bool g53) const;
   void straight(bool feed, const canonical::Pose& end, const BlockCommand* b);
   void set_inverse_time_rate(double length, const BlockCommand& b);
 
   // arcs.cpp
   void arc(const BlockCommand& b, int motion, const canonical::Pose& end);
+
+  // splines.cpp
+  void spline(const BlockCommand& b, int motion);
+  void nurbs_point(const BlockCommand& b);
+  void nurbs_end(const BlockCommand& b);
+
+  // probing.cpp
+  void probe(const BlockCommand& b, int motion);
 
   // canned_cycles.cpp
   void canned_cycle(const BlockCommand& b, int motion);
@@ -149,6 +165,7 @@ class Executor final : public ComputedParameters {
   // back behind the pending move. s_.position stays the programmed point.
   ToolTable tools_;               // the program's copy, edited by G10 L1/L10/L11
   bool tool_table_given_ = false; // without a table any tool number is accepted
+  bool warned_no_tool_length_ = false;  // G43 without a tool list: said once
   int current_pocket_ = 1;        // LinuxCNC's pocket of the loaded tool (rs274 starts at 1)
   ToolEntry spindle_tool_{};      // pocket 0: the loaded tool's data as M6 copied it (G41/G42
                                   // without D, #5400-#5413); M61 does not copy, G10 L1 updates it
@@ -181,6 +198,11 @@ class Executor final : public ComputedParameters {
   std::uint32_t comp_column_ = 0;  // column of the block's motion code, for comp errors
   bool comp_moved_ = false;        // a move was made with compensation on (radius > 0)
   bool arc_not_allowed_ = false;   // just after G40: the next move must be straight
+
+  // G5.2 control points so far and the curve's order (LinuxCNC keeps them outside the modal
+  // state: M70-M73 do not save them).
+  std::vector<canonical::NurbsControlPoint> nurbs_points_;
+  int nurbs_order_ = 3;
 };
 
 }  // namespace ncbridge::interpreter

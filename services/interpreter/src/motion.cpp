@@ -33,6 +33,50 @@ Pose Executor::find_end(const BlockCommand& b, bool g53) const {
       end.*axis.field = v;
     }
   }
+  if (b.has_polar()) end = polar_end(b, end, g53);
+  return end;
+}
+
+// Polar coordinates in the XY plane (LinuxCNC find_ends): in G90, `@` is the radius and `^` the
+// angle about the origin, a missing one kept from the current point; in G91, `@` adds to the
+// current point's radius and `^` to its angle (the radius first).
+Pose Executor::polar_end(const BlockCommand& b, Pose end, bool g53) const {
+  constexpr double kDegree = 3.14159265358979323846 / 180.0;
+  if (g53) fail(b.polar_column(), "Cannot use polar coordinates with G53");
+  double& x = end.x;
+  double& y = end.y;
+  if (s_.distance == DistanceMode::Absolute) {
+    if (b.has_polar_radius && b.has_polar_angle) {
+      x = b.polar_radius * std::cos(b.polar_angle * kDegree);
+      y = b.polar_radius * std::sin(b.polar_angle * kDegree);
+    } else if (b.has_polar_radius) {
+      if (x == 0 && y == 0) fail(b.polar_radius_column, "Must specify angle in polar coordinate if at the origin");
+      const double theta = std::atan2(y, x);
+      x = b.polar_radius * std::cos(theta);
+      y = b.polar_radius * std::sin(theta);
+    } else {
+      const double radius = std::hypot(y, x);
+      x = radius * std::cos(b.polar_angle * kDegree);
+      y = radius * std::sin(b.polar_angle * kDegree);
+    }
+    return end;
+  }
+  if (b.has_polar_radius) {
+    if (x == 0 && y == 0) {
+      fail(b.polar_radius_column, "Incremental motion with polar coordinates is indeterminate when at the origin");
+    }
+    const double theta = std::atan2(y, x);
+    const double radius = std::hypot(y, x) + b.polar_radius;
+    x = radius * std::cos(theta);
+    y = radius * std::sin(theta);
+  }
+  if (b.has_polar_angle) {
+    if (x == 0 && y == 0) fail(b.polar_angle_column, "G91 motion with polar coordinates is indeterminate when at the origin");
+    const double theta = std::atan2(y, x) + b.polar_angle * kDegree;
+    const double radius = std::hypot(y, x);
+    x = radius * std::cos(theta);
+    y = radius * std::sin(theta);
+  }
   return end;
 }
 
@@ -115,6 +159,19 @@ void Executor::do_motion(const BlockCommand& b, int motion, bool g53) {
     case 800:
       emit(Comment{"interpreter: motion mode set to none"});
       break;
+    case 50:
+    case 51:
+      spline(b, motion);
+      return;  // G5 and G5.1 leave the motion mode as it was
+    case 52:
+      nurbs_point(b);
+      return;
+    case 382:
+    case 383:
+    case 384:
+    case 385:
+      probe(b, motion);
+      return;
     default:
       if (is_canned_cycle(motion)) {
         canned_cycle(b, motion);

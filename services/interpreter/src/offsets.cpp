@@ -69,17 +69,39 @@ void Executor::apply_origin_change(const Pose& old_total_mm) {
   }
 }
 
-void Executor::do_coordinate_system(int g) {
+// The current point in the coordinates of `system` (program units): through the active G92
+// offset, the active rotation and origin, then back by the other system's origin, rotation and
+// the G92 offset (LinuxCNC find_current_in_system).
+Pose Executor::current_in_system(int system) const {
+  const double k = s_.mm_per_unit();
+  Pose p = s_.position;
+  const Pose& active = s_.g5x_mm[static_cast<std::size_t>(s_.coord_system)];
+  const Pose& other = s_.g5x_mm[static_cast<std::size_t>(system)];
+  for (int axis = 0; axis < 9; ++axis) {
+    if (s_.g92_active) p.*kFields[axis] += s_.g92_mm.*kFields[axis] / (is_linear(axis) ? k : 1.0);
+  }
+  rotate(p.x, p.y, s_.rotation());
+  for (int axis = 0; axis < 9; ++axis) {
+    const double scale = is_linear(axis) ? k : 1.0;
+    p.*kFields[axis] += (active.*kFields[axis] - other.*kFields[axis]) / scale;
+  }
+  rotate(p.x, p.y, -s_.rotation_deg[static_cast<std::size_t>(system)]);
+  for (int axis = 0; axis < 9; ++axis) {
+    if (s_.g92_active) p.*kFields[axis] -= s_.g92_mm.*kFields[axis] / (is_linear(axis) ? k : 1.0);
+  }
+  return p;
+}
+
+void Executor::do_coordinate_system(int g, std::uint32_t column) {
   int system = g == 540 ? 1 : g == 550 ? 2 : g == 560 ? 3 : g == 570 ? 4 : g == 580 ? 5 : g == 590 ? 6
              : g == 591 ? 7 : g == 592 ? 8 : 9;
-  if (s_.comp_side != Side::Off) fail(0, "Cannot change coordinate systems with cutter radius compensation on");
+  if (s_.comp_side != Side::Off) fail(column, "Cannot change coordinate systems with cutter radius compensation on");
   if (system == s_.coord_system) {
     emit(Comment{"interpreter: continuing to use same coordinate system"});
     return;
   }
-  Pose old = origin_mm();
+  s_.position = current_in_system(system);
   s_.coord_system = system;
-  apply_origin_change(old);
   params_.set_numbered(5220, system);
   emit_g5x();
   emit_g92();
@@ -100,28 +122,45 @@ void Executor::do_g10(const BlockCommand& b) {
       fail(b.g_column[kGNonModal], "Cannot change the active coordinate system with cutter radius compensation on");
     }
     Pose& target = s_.g5x_mm[static_cast<std::size_t>(system)];
-    Pose old = origin_mm();
-    for (int axis = 0; axis < 9; ++axis) {
-      char letter = kLetters[axis];
-      if (!b.has(letter)) continue;
-      double scale = is_linear(axis) ? k : 1.0;
-      double v = b.get(letter);
-      if (l == 2) {
-        target.*kFields[axis] = v * scale;
-      } else {
-        // L20: make the current position read `v` in that system
-        double machine = (s_.position.*kFields[axis]) * scale + old.*kFields[axis] +
-                         (axis == 2 || axis == 0 ? s_.tool_offset_mm.*kFields[axis] : 0.0);
-        double g92 = s_.g92_active ? s_.g92_mm.*kFields[axis] : 0.0;
-        target.*kFields[axis] = machine - v * scale - g92 -
-                                (axis == 2 || axis == 0 ? s_.tool_offset_mm.*kFields[axis] : 0.0);
+    const Pose old_g5x = s_.g5x_mm[static_cast<std::size_t>(s_.coord_system)];
+    const double old_rotation = s_.rotation();
+    if (b.has('r') && l == 20) fail(b.col('r'), "R not allowed in G10 L20");
+    double& rotation = s_.rotation_deg[static_cast<std::size_t>(system)];
+    if (b.has('r')) rotation = b.get('r');
+    if (l == 2) {
+      for (int axis = 0; axis < 9; ++axis) {
+        if (b.has(kLetters[axis])) target.*kFields[axis] = b.get(kLetters[axis]) * (is_linear(axis) ? k : 1.0);
+      }
+    } else {
+      // L20: the origin that makes the current position read the given values in that system,
+      // found as LinuxCNC does: X and Y through the system's rotation
+      const Pose here = current_in_system(system);
+      double old_x = here.x, old_y = here.y;
+      double x = b.has('x') ? b.get('x') : here.x, y = b.has('y') ? b.get('y') : here.y;
+      rotate(old_x, old_y, rotation);
+      rotate(x, y, rotation);
+      if (b.has('x') || b.has('y')) {
+        target.x = (old_x - x) * k + target.x;
+        target.y = (old_y - y) * k + target.y;
+      }
+      for (int axis = 2; axis < 9; ++axis) {
+        if (!b.has(kLetters[axis])) continue;
+        const double scale = is_linear(axis) ? k : 1.0;
+        target.*kFields[axis] += (here.*kFields[axis] - b.get(kLetters[axis])) * scale;
       }
     }
-    if (b.has('r')) s_.rotation_deg[static_cast<std::size_t>(system)] = b.get('r');
     write_parameters();
     if (system != s_.coord_system) emit(Comment{"interpreter: setting coordinate system origin"});
     if (system == s_.coord_system) {
-      apply_origin_change(old);
+      // the current point, as LinuxCNC moves it: out of the old rotation, by the change of the
+      // origin, into the new rotation (the G92 offset takes no part)
+      Pose& p = s_.position;
+      rotate(p.x, p.y, old_rotation);
+      for (int axis = 0; axis < 9; ++axis) {
+        const double scale = is_linear(axis) ? k : 1.0;
+        p.*kFields[axis] += (old_g5x.*kFields[axis] - target.*kFields[axis]) / scale;
+      }
+      rotate(p.x, p.y, -rotation);
       emit_g5x();
       emit(SetXyRotation{s_.rotation()});
     }
@@ -263,6 +302,18 @@ void Executor::do_axis_offsets(const BlockCommand& b, int g) {
         } else {
           s_.g92_mm.*kFields[axis] = current_g92;
         }
+      }
+      s_.g92_active = true;
+      break;
+    }
+    case 520: {
+      // G52: a local offset, the G92 offset set to the values given (LinuxCNC: the position
+      // moves by the change, unrotated)
+      if (s_.comp_side != Side::Off) fail(b.g_column[kGNonModal], "Cannot change axis offsets with cutter radius comp");
+      for (int axis = 0; axis < 9; ++axis) {
+        const double scale = is_linear(axis) ? k : 1.0;
+        const double current_g92 = s_.g92_active ? s_.g92_mm.*kFields[axis] : 0.0;
+        s_.g92_mm.*kFields[axis] = b.has(kLetters[axis]) ? b.get(kLetters[axis]) * scale : current_g92;
       }
       s_.g92_active = true;
       break;

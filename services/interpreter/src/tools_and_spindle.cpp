@@ -121,10 +121,18 @@ void Executor::do_tool_length_offset(const BlockCommand& b, int g) {
       if (tool < 0) fail(b.col('h'), "Negative H word tool length offset index used");
       if (tool != 0) {
         const ToolEntry* t = tools_.find(tool);
-        if (t == nullptr) {
+        if (t == nullptr && tool_table_given_) {
           fail(b.col('h'), "Tool " + std::to_string(tool) + " has no tool length offset (not in the tool table)");
         }
-        offset_mm = t->offset_mm;
+        if (t != nullptr) {
+          offset_mm = t->offset_mm;
+        } else if (!warned_no_tool_length_) {
+          // the tool-tip path does not depend on the length: without a tool list it is 0
+          warned_no_tool_length_ = true;
+          warn(b.col('h'), "G43 H" + std::to_string(tool) +
+                               ": no tool list, so no tool lengths: length 0 used (the tool-tip path is the same); "
+                               "give --tools for the real lengths");
+        }
       }
     } else if (const ToolEntry* t = tool_entry(s_.tool_in_spindle)) {
       // LinuxCNC reads the loaded tool's pocket (also after M61, where rs274's simulated

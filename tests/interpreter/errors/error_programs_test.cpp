@@ -1,6 +1,6 @@
 // Every program in tests/interpreter/errors/ is wrong in one way, named in its header:
 //   (expect-error: LINE:COLUMN: fragment|fragment...)
-// `ncbridge canon` must exit non-zero (not crash) and print `file:LINE:COLUMN: error: message`
+// `ncbridge canon` must exit non-zero (not crash) and print `ncbridge: error: file:LINE:COLUMN: message`
 // with one of the fragments in the message (case-insensitive). COLUMN `*` accepts any column.
 #include <gtest/gtest.h>
 
@@ -92,7 +92,7 @@ TEST_P(ErrorProgram, FailsWithFileLineColumnAndMessage) {
   ASSERT_NE(run.exit_code, 0) << "ncbridge accepted " << c.program;
   ASSERT_LT(run.exit_code, 128) << "ncbridge was killed by a signal on " << c.program << ":\n" << run.err;
 
-  static const std::regex diagnostic(R"((.*):(\d+):(\d+): error: (.*))");
+  static const std::regex diagnostic(R"(ncbridge: error: (.*):(\d+):(\d+): (.*))");
   std::smatch m;
   std::string line_text;
   bool found = false;
@@ -103,7 +103,7 @@ TEST_P(ErrorProgram, FailsWithFileLineColumnAndMessage) {
     if (eol == std::string::npos) break;
     start = eol + 1;
   }
-  ASSERT_TRUE(found) << "no `file:line:column: error: message` line in:\n" << run.err;
+  ASSERT_TRUE(found) << "no `ncbridge: error: file:line:column: message` line in:\n" << run.err;
   EXPECT_TRUE(fs::path(m[1].str()).filename() == c.program.filename()) << line_text;
   EXPECT_EQ(std::stoul(m[2]), c.line) << line_text;
   if (c.column != 0) {

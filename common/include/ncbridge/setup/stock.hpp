@@ -5,12 +5,16 @@
 #include <string>
 #include <string_view>
 
+#include "ncbridge/setup/length_units.hpp"
+
 namespace ncbridge::setup {
 
 struct Stock {
   // An axis-aligned block in the program frame (the active work offset), millimetres.
   std::array<double, 3> min{0, 0, 0};
   std::array<double, 3> max{0, 0, 0};
+  // The units the file gave ("units", mm when it says none); min and max are mm whatever they are.
+  LengthUnits file_units = LengthUnits::Millimeters;
 
   double size(int axis) const { return max[axis] - min[axis]; }
 };

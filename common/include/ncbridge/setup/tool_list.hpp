@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "ncbridge/setup/length_units.hpp"
+
 namespace ncbridge::setup {
 
 // Tool kinds, named as in the tool list format and mapped to ISO 14649-111 tool entities.
@@ -29,6 +31,11 @@ struct Tool {
   int flutes = 0;                 // 0 = unknown
   double point_angle = 0;         // degrees (drills), 0 = unknown
   double thread_pitch = 0;        // mm (taps), 0 = unknown
+  // Cutting data the shop gives with the tool (0 = not given): spindle speed, feed and plunge
+  // (axial) feed.
+  double spindle_rpm = 0;         // rev/min
+  double feed = 0;                // mm/min
+  double plunge_feed = 0;         // mm/min
   // LinuxCNC tool-table extras (offsets beyond Z, orientation for lathes) are kept here.
   double x_offset = 0;            // mm
   int pocket = 0;                 // P in a tool table; defaults to the tool number
@@ -47,8 +54,6 @@ class ToolList {
  private:
   std::vector<Tool> tools_;  // sorted by number, unique numbers
 };
-
-enum class LengthUnits : std::uint8_t { Millimeters, Inches };
 
 // The project's tool list: a JSON array (or {"tools": [...]}) or the same in YAML; chosen by
 // extension (.json / .yaml / .yml), else by content. Unknown fields are ignored. Errors

@@ -15,6 +15,14 @@ struct ExecutedBlock {
   BlockKind kind = BlockKind::Block;
   std::string text;
   std::uint32_t line = 0;
+  // RunStart: what the controller runs (proto/block.proto).
+  std::string program_text;
+  std::string tool_table;       // LinuxCNC .tbl lines, "" = none
+  bool tool_table_inch = false;
+  std::uint32_t start_line = 0;
+  // RunEnd: a run stopped before the program's end.
+  bool aborted = false;
+  std::string reason;
   friend bool operator==(const ExecutedBlock&, const ExecutedBlock&) = default;
 };
 

@@ -154,6 +154,15 @@ class LineReader {
       pos_ = close + 1;
       return;
     }
+    if (c == ';' && flavour_.semicolon_comments) {  // a comment to the end of the line
+      CommentText comment;
+      comment.kind = CommentText::Kind::LineEnd;
+      comment.text = s_.substr(pos_ + 1);
+      comment.column = static_cast<std::uint32_t>(start + 1);
+      b.comments.push_back(comment);
+      pos_ = s_.size();
+      return;
+    }
     if (c == ';') {  // end of block
       ++pos_;
       skip_space();

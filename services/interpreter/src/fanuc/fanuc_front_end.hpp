@@ -16,6 +16,7 @@ struct Flavour {
   bool macro_b = true;           // custom macro B statements (IF, WHILE, GOTO, G65)
   bool packed_m98_count = true;  // M98 P30100 = call O0100 three times (Fanuc); Mach: P is the O-number
   bool dwell_p_in_ms = true;     // G4 P and cycle P in milliseconds (Fanuc); Mach: seconds
+  bool semicolon_comments = false;  // `;` starts a comment to the end of the line (Mach); Fanuc: end of block
 };
 
 Flavour fanuc_flavour();

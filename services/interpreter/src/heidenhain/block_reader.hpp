@@ -9,6 +9,7 @@
 
 #include "block_model.hpp"
 #include "lowering/infix_expression.hpp"
+#include "lowering/line_segment.hpp"
 #include "ncbridge/common/error.hpp"
 
 namespace ncbridge::interpreter::heidenhain {
@@ -25,7 +26,9 @@ struct HWord {
 
 enum class Kind {
   Empty, Comment, BeginPgm, EndPgm, BlkForm, ToolCall, ToolDef, CyclDef, CyclCall, Label, CallLabel, CallPgm,
-  Assign, FnJump, Stop, Path
+  Assign, FnJump, Stop, Path, TchProbe,
+  Functions,  // a block of M functions only (`9 M5`, `M5 M9`), as Fusion's post writes at tool changes
+  SysRead     // FN 18: SYSREAD Qn = IDa NRb IDXc (words ID, NR, IDX)
 };
 
 struct HBlock {
@@ -42,6 +45,7 @@ struct HBlock {
   bool label_is_name = false;
   double label_number = 0;
   std::string tool_name;       // TOOL CALL "name"
+  std::vector<std::pair<ExprRef, ExprRef>> parameters;  // CYCL DEF: Q200=+2 ... (target, value)
 };
 
 inline std::string up(std::string_view s) {
@@ -75,11 +79,14 @@ class Reader {
     };
   }
 
-  void read(std::string_view s, std::uint32_t line, const std::string& file, HBlock& out) {
+  // `segments`: where the parts of a block joined from several lines come from (errors name them).
+  void read(std::string_view s, std::uint32_t line, const std::string& file, HBlock& out,
+            const std::vector<lowering::LineSegment>* segments = nullptr) {
     s_ = s;
     pos_ = 0;
     line_ = line;
     file_ = &file;
+    segments_ = segments;
     out = HBlock{};
     out.exprs.line = line;
     skip();
@@ -142,8 +149,29 @@ class Reader {
       while (pos_ < s_.size() && (lowering::is_digit(s_[pos_]) || s_[pos_] == '.')) ++pos_;
       if (start == pos_) fail(start, "CYCL DEF needs a cycle number");
       out.keyword = std::string(s_.substr(start, pos_ - start));
+      out.column = static_cast<std::uint32_t>(start + 1);
+      // the cycle's name, then (a block continued with `~`) its parameters Q200=+2 Q201=-12 ...
+      std::size_t q = pos_;
+      while (q < s_.size() && !(lowering::upper(s_[q]) == 'Q' && (q == 0 || s_[q - 1] == ' ') && assignment_at(q))) ++q;
+      out.text = up(s_.substr(pos_, q - pos_));
+      pos_ = q;
+      while (skip(), pos_ < s_.size()) {
+        if (!assignment_at(pos_)) fail(pos_, "Cycle parameter (Qn=value) expected");
+        ExprRef target = syntax_.variable(s_, pos_, out.exprs);
+        skip();
+        ++pos_;  // '='
+        out.parameters.emplace_back(target, value(out.exprs));
+      }
+    } else if (keyword("TCH PROBE")) {  // touch probe cycles: number and text as CYCL DEF
+      out.kind = Kind::TchProbe;
+      skip();
+      std::size_t start = pos_;
+      while (pos_ < s_.size() && (lowering::is_digit(s_[pos_]) || s_[pos_] == '.')) ++pos_;
+      if (start == pos_) fail(start, "TCH PROBE needs a cycle number");
+      out.keyword = std::string(s_.substr(start, pos_ - start));
       out.text = up(s_.substr(pos_));
       out.column = static_cast<std::uint32_t>(start + 1);
+      if (out.keyword == "0.1") words(out);  // cycle 0's pre-position: X+5 Y+0 Z-5
     } else if (keyword("CYCL CALL")) {
       out.kind = Kind::CyclCall;
       skip();
@@ -179,8 +207,11 @@ class Reader {
     } else if (lowering::upper(s_[pos_]) == 'Q' && assignment_follows()) {
       out.kind = Kind::Assign;
       assignment(out);
+    } else if (lowering::upper(s_[pos_]) == 'M' && pos_ + 1 < s_.size() && lowering::is_digit(s_[pos_ + 1])) {
+      out.kind = Kind::Functions;
+      words(out);
     } else {
-      static constexpr std::string_view kPaths[] = {"RND", "CHF", "CC", "CR", "CT", "CP", "LP", "L", "C"};
+      static constexpr std::string_view kPaths[] = {"APPR", "DEP", "RND", "CHF", "CC", "CR", "CT", "CP", "LP", "L", "C"};
       for (std::string_view p : kPaths) {
         std::size_t save = pos_;
         if (keyword(p) && (pos_ >= s_.size() || s_[pos_] == ' ' || s_[pos_] == '\t')) {
@@ -197,7 +228,9 @@ class Reader {
 
  private:
   [[noreturn]] void fail(std::size_t at, const std::string& message) const {
-    throw InputError({*file_, line_, static_cast<std::uint32_t>(at + 1)}, message);
+    static const std::vector<lowering::LineSegment> kNone;
+    throw InputError(lowering::locate(*file_, line_, static_cast<std::uint32_t>(at + 1), segments_ ? *segments_ : kNone),
+                     message);
   }
   void skip() {
     while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '~')) ++pos_;
@@ -225,8 +258,18 @@ class Reader {
     pos_ = p;
     return true;
   }
-  bool assignment_follows() const {
-    std::size_t p = pos_ + 1;
+  // A Q, QL or QR parameter starts at `p` (a value written right after its address: FQ4).
+  bool q_parameter_at(std::size_t p) const {
+    if (p + 1 >= s_.size() || lowering::upper(s_[p]) != 'Q') return false;
+    std::size_t d = p + 1;
+    if (lowering::upper(s_[d]) == 'L' || lowering::upper(s_[d]) == 'R') ++d;
+    return d < s_.size() && lowering::is_digit(s_[d]);
+  }
+  bool assignment_follows() const { return assignment_at(pos_); }
+  // `Qn =` (or QLn, QRn) at p.
+  bool assignment_at(std::size_t at) const {
+    if (!q_parameter_at(at)) return false;
+    std::size_t p = at + 1;
     while (p < s_.size() && (lowering::is_alpha(s_[p]) || lowering::is_digit(s_[p]))) ++p;
     while (p < s_.size() && s_[p] == ' ') ++p;
     return p < s_.size() && s_[p] == '=';
@@ -321,6 +364,30 @@ class Reader {
       out.value = static_cast<ExprRef>(out.exprs.nodes.size() - 1);
       return;
     }
+    if (fnum == 18) {
+      // FN 18: SYSREAD Q10 = ID50 NR2 IDX11 (each number may be a Q parameter: IDXQ11)
+      if (!keyword("SYSREAD")) fail(pos_, "FN 18 needs SYSREAD");
+      skip();
+      out.kind = Kind::SysRead;
+      out.target = syntax_.variable(s_, pos_, out.exprs);
+      if (out.target == kNoExpr) fail(pos_, "Q parameter expected");
+      skip();
+      if (pos_ >= s_.size() || s_[pos_] != '=') fail(pos_, "'=' missing in FN 18");
+      ++pos_;
+      for (;;) {
+        skip();
+        if (pos_ >= s_.size()) break;
+        HWord w;
+        w.column = static_cast<std::uint32_t>(pos_ + 1);
+        if (keyword("IDX")) w.name = "IDX";
+        else if (keyword("ID")) w.name = "ID";
+        else if (keyword("NR")) w.name = "NR";
+        else fail(pos_, "FN 18 takes ID, NR and IDX");
+        w.value = value(out.exprs);
+        out.words.push_back(w);
+      }
+      return;
+    }
     if (fnum >= 9 && fnum <= 12) {
       out.kind = Kind::FnJump;
       if (!keyword("IF")) fail(pos_, "FN " + std::to_string(fnum) + " needs IF");
@@ -337,7 +404,7 @@ class Reader {
       label(out);
       return;
     }
-    fail(out.column - 1, "FN " + std::to_string(fnum) + " is not supported (FN 0-4 and FN 9-12 are)");
+    fail(out.column - 1, "FN " + std::to_string(fnum) + " is not supported (FN 0-4, FN 9-12 and FN 18 are)");
   }
   void words(HBlock& out) {
     for (;;) {
@@ -358,6 +425,7 @@ class Reader {
         name.push_back(lowering::upper(s_[pos_++]));
         // stop before a Q variable used as the value (X+Q1 is handled by the sign; XQ1 is not TNC)
         if (name == "FMAX" || name == "FAUTO") break;
+        if (q_parameter_at(pos_)) break;  // FQ4: the feed from Q4
       }
       HWord w;
       w.name = name;
@@ -384,6 +452,7 @@ class Reader {
   std::size_t pos_ = 0;
   std::uint32_t line_ = 0;
   const std::string* file_ = nullptr;
+  const std::vector<lowering::LineSegment>* segments_ = nullptr;
 };
 
 }  // namespace ncbridge::interpreter::heidenhain

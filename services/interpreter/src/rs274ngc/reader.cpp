@@ -403,6 +403,15 @@ class LineParser {
       b_.words.push_back(w);
       return;
     }
+    if (c == '@' || c == '^') {  // polar radius and angle (LinuxCNC read_atsign, read_carat)
+      ++pos_;
+      Word w;
+      w.letter = c;
+      w.column = static_cast<std::uint32_t>(start + 1);
+      w.value = read_real_value();
+      b_.words.push_back(w);
+      return;
+    }
     if (c == 'n') fail(start, "N word (line number) must come first on the line");
     if (c == 'o') fail(start, "O word must come first on the line (after the N word)");
     fail(start, std::string("Bad character used: '") + s_[pos_] + "'");

@@ -24,6 +24,9 @@ struct Item {
   char mode = 0;                    // 'A' for =AC(..), 'I' for =IC(..)
   std::vector<ExprRef> arguments;   // Call: kNoExpr for an empty argument
   std::string text;                 // Keyword operand (label), string argument (MSG, T="name")
+  // MSG("Depth " << R1 << " mm"): the parts of a string expression, text or a value (kNoExpr
+  // marks a text part)
+  std::vector<std::pair<std::string, ExprRef>> message;
   std::uint32_t column = 0;
 };
 
@@ -42,6 +45,9 @@ struct SBlock {
   std::uint32_t control_column = 0;
   std::string for_variable;  // the variable's parameter key (_r1, _v_name)
   ExprRef for_from = kNoExpr, for_to = kNoExpr;
+  // PROC NAME(INT A, REAL B) (control "PROC"): the parameter names in order; EXTERN
+  // declarations (control "EXTERN") declare nothing a reading needs
+  std::vector<std::string> proc_parameters;
 };
 
 inline std::string up(std::string_view s) {
@@ -64,6 +70,7 @@ class Reader {
       std::string name;
       while (p < s.size() && ident_char(s[p])) name.push_back(lowering::upper(s[p++]));
       std::string key;
+      if (name == "$AA_MW" || name == "$AC_MEA") return measurement(s, pos, p, name, b);
       if (name.size() > 1 && name[0] == 'R' && std::all_of(name.begin() + 1, name.end(), lowering::is_digit)) {
         key = "_r" + name.substr(1);
       } else if (variables_.count(name)) {
@@ -77,10 +84,44 @@ class Reader {
     };
   }
 
+  // $AC_MEA[n]: 1 once probe n (1, 2) triggered in a MEAS/MEAW block, else 0.
+  static std::string measured_key(int probe) { return "_v_$ac_mea_" + std::to_string(probe); }
+
   static std::string variable_key(const std::string& name) {
     std::string key = "_v_";
     for (char c : name) key.push_back((c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c);
     return key;
+  }
+
+  // $AA_MW[axis] (the measured position, workpiece coordinates: LinuxCNC's #5061.. X Y Z A B C)
+  // and $AC_MEA[probe], read after MEAS=/MEAW=.
+  ExprRef measurement(std::string_view s, std::size_t& pos, std::size_t p, const std::string& name, Block& b) const {
+    const auto column = static_cast<std::uint32_t>(pos + 1);
+    std::size_t q = p;
+    while (q < s.size() && s[q] == ' ') ++q;
+    std::size_t close = q < s.size() && s[q] == '[' ? s.find(']', q) : std::string_view::npos;
+    if (close == std::string_view::npos) fail(pos, name + " needs an index in brackets");
+    std::string index = up(s.substr(q + 1, close - q - 1));
+    index.erase(std::remove(index.begin(), index.end(), ' '), index.end());
+    pos = close + 1;
+    if (name == "$AC_MEA") {
+      if (index != "1" && index != "2") fail(q, "$AC_MEA[" + index + "]: the probe is 1 or 2");
+      return b.add_named_parameter(measured_key(index == "1" ? 1 : 2), column);
+    }
+    static constexpr std::string_view kAxes = "XYZABC";
+    const std::size_t axis = index.size() == 1 ? kAxes.find(index[0]) : std::string_view::npos;
+    if (axis == std::string_view::npos) fail(q, "$AA_MW[" + index + "]: the axis is X, Y, Z, A, B or C");
+    ExprNode number;
+    number.op = ExprOp::Number;
+    number.value = 5061.0 + static_cast<double>(axis);
+    number.column = column;
+    b.nodes.push_back(number);
+    ExprNode parameter;
+    parameter.op = ExprOp::Parameter;
+    parameter.a = static_cast<ExprRef>(b.nodes.size() - 1);
+    parameter.column = column;
+    b.nodes.push_back(parameter);
+    return static_cast<ExprRef>(b.nodes.size() - 1);
   }
 
   void read(std::string_view s, std::uint32_t line, const std::string& file, SBlock& out) {
@@ -170,7 +211,9 @@ class Reader {
       std::size_t r = q;
       while (r < s_.size() && s_[r] == ' ') ++r;
       bool assignment = q > p + 1 && r < s_.size() && s_[r] == '=' && (r + 1 >= s_.size() || s_[r + 1] != '=');
-      if (!assignment) {
+      // L140(2): a subprogram called with arguments, not the word L140
+      const bool call = q > p + 1 && r < s_.size() && s_[r] == '(';
+      if (!assignment && !call) {
         Item it;
         it.kind = Item::Kind::Word;
         it.name = std::string(1, lowering::upper(c));
@@ -191,6 +234,27 @@ class Reader {
     Item it;
     it.name = name;
     it.column = static_cast<std::uint32_t>(start + 1);
+    if ((name == "PROC" || name == "EXTERN") && out.items.empty() && out.control.empty()) {
+      declaration(out, name, it.column);
+      return;
+    }
+    if (name == "CALL" && pos_ < s_.size() && (s_[pos_] == '"' || ident_char(s_[pos_]))) {
+      // CALL "PART2" / CALL PART2: the named program, as a call of its name
+      std::size_t q = pos_;
+      if (s_[q] == '"') {
+        std::size_t close = s_.find('"', q + 1);
+        if (close == std::string_view::npos) fail(q, "Program name not closed by '\"'");
+        it.text = std::string(s_.substr(q + 1, close - q - 1));
+        pos_ = close + 1;
+      } else {
+        while (q < s_.size() && (ident_char(s_[q]) || s_[q] == '.')) ++q;
+        it.text = std::string(s_.substr(pos_, q - pos_));
+        pos_ = q;
+      }
+      it.kind = Item::Kind::Keyword;
+      out.items.push_back(it);
+      return;
+    }
     if (pos_ < s_.size() && s_[pos_] == '=' && (pos_ + 1 >= s_.size() || s_[pos_ + 1] != '=')) {
       ++pos_;
       skip();
@@ -225,12 +289,39 @@ class Reader {
           ++pos_;
           continue;
         }
-        if (s_[pos_] == '"') {
-          std::size_t close = s_.find('"', pos_ + 1);
-          if (close == std::string_view::npos) fail(pos_, "String not closed by '\"'");
-          it.text = std::string(s_.substr(pos_ + 1, close - pos_ - 1));
+        if (s_[pos_] == '"' || (name == "MSG" && it.arguments.empty())) {
+          // a string, or (MSG) a string expression: "text" << R1 << "text"
+          for (;;) {
+            skip();
+            if (pos_ < s_.size() && s_[pos_] == '"') {
+              std::size_t close = s_.find('"', pos_ + 1);
+              if (close == std::string_view::npos) fail(pos_, "String not closed by '\"'");
+              it.message.emplace_back(std::string(s_.substr(pos_ + 1, close - pos_ - 1)), kNoExpr);
+              pos_ = close + 1;
+            } else {
+              // the value runs to the next << (or the end of the argument): parsed on its own
+              std::size_t end = pos_;
+              int depth = 0;
+              while (end < s_.size()) {
+                const char ch = s_[end];
+                if (ch == '(') ++depth;
+                if (ch == ')' && depth-- == 0) break;
+                if ((ch == ',' && depth == 0) || (s_.substr(end, 2) == "<<" && depth == 0)) break;
+                ++end;
+              }
+              InfixParser parser(s_.substr(0, end), pos_, out.exprs, syntax_, *file_, line_);
+              it.message.emplace_back(std::string(), parser.expression());
+              pos_ = parser.position();
+            }
+            skip();
+            if (s_.substr(pos_, 2) != "<<") break;
+            pos_ += 2;
+          }
+          for (const auto& part : it.message) {
+            if (part.second == kNoExpr) it.text += part.first;
+          }
+          if (it.message.size() == 1 && it.message.front().second == kNoExpr) it.message.clear();
           it.arguments.push_back(kNoExpr);  // keeps the positions of the arguments after it
-          pos_ = close + 1;
         } else {
           it.arguments.push_back(expression(out.exprs));
         }
@@ -333,7 +424,45 @@ class Reader {
   }
 
  public:
-  std::set<std::string> declared_;  // names a DEF of this block declared
+  std::set<std::string> declared_;  // names a DEF (or PROC) of this block declared
+
+ private:
+  // PROC NAME(INT A, REAL B=5, VAR REAL C) SAVE / EXTERN NAME(INT, REAL): the names are
+  // declared as variables (the call binds them); types and the rest are not needed.
+  void declaration(SBlock& out, const std::string& keyword, std::uint32_t column) {
+    out.control = keyword;
+    out.control_column = column;
+    std::size_t open = s_.find('(', pos_);
+    if (open == std::string_view::npos) {
+      pos_ = s_.size();
+      return;
+    }
+    std::size_t close = s_.find(')', open);
+    if (close == std::string_view::npos) fail(open, "')' missing in " + keyword);
+    if (keyword == "PROC") {
+      std::string_view list = s_.substr(open + 1, close - open - 1);
+      std::size_t i = 0;
+      while (i < list.size()) {
+        std::size_t comma = list.find(',', i);
+        if (comma == std::string_view::npos) comma = list.size();
+        std::string_view part = list.substr(i, comma - i);
+        std::size_t eq = part.find('=');
+        if (eq != std::string_view::npos) part = part.substr(0, eq);
+        while (!part.empty() && (part.back() == ' ' || part.back() == '\t')) part.remove_suffix(1);
+        std::size_t b = part.size();
+        while (b > 0 && ident_char(part[b - 1])) --b;
+        std::string name = up(part.substr(b));
+        if (!name.empty()) {
+          out.proc_parameters.push_back(name);
+          declared_.insert(name);
+        }
+        i = comma + 1;
+      }
+    }
+    pos_ = s_.size();  // SAVE, DISPLOF and the like follow: nothing a reading needs
+  }
+
+ public:
 
  private:
   const std::set<std::string>& variables_;

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -32,8 +34,23 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct File {
   ProgramText text;
-  std::map<std::string, std::size_t> labels;
+  std::map<std::string, std::vector<std::size_t>> labels;  // a label may be written again further on
 };
+
+// What a ShopMill step is, for the message that refuses it.
+std::string shopmill_step_name(const std::string& step) {
+  static const std::map<std::string, std::string> kNames = {
+      {"E_MI_PL", "face milling"}, {"E_DR", "drilling"}, {"E_DR_BGF", "boring"}, {"E_DR_REA", "reaming"},
+      {"E_DR_SIN", "centring"}, {"E_DR_TAP", "tapping"}, {"E_DR_O1", "deep hole drilling"},
+      {"E_PS_XYZ", "positions"}, {"E_PS_POL", "positions on a circle"}, {"E_PS_CIR", "positions on a circle"},
+      {"E_PS_MRX", "position matrix"}, {"E_PS_FRA", "position frame"}, {"E_PS_SEQ", "position row"},
+      {"E_PS_ROW", "position row"}, {"E_PS_HIN", "obstacle"}, {"E_CON", "contour"}, {"E_MI_CON", "contour milling"},
+      {"E_MI_TR", "path milling"}, {"E_PO_REC", "rectangular pocket"}, {"E_PO_CIR", "circular pocket"},
+      {"E_SL_LON", "longitudinal slot"}, {"E_SL_CIR", "circumferential slot"}, {"E_CONFIG", "configuration"},
+      {"E_TR_ORI", "zero offset"}, {"E_TR_OFF", "zero offset"}, {"E_MI_TXT", "engraving"}};
+  auto it = kNames.find(step);
+  return it == kNames.end() ? "a ShopMill step" : it->second;
+}
 
 class Runner {
  public:
@@ -54,7 +71,11 @@ class Runner {
     return evaluate(b.exprs, ref, m_.parameters(), m_.file_name());
   }
   void jump(const std::string& label, const std::string& how, std::uint32_t column);
-  void call_subprogram(const std::string& name, int repeats, std::uint32_t column);
+  void call_subprogram(const std::string& name, int repeats, std::uint32_t column,
+                       const std::vector<std::optional<double>>& arguments = {});
+  std::optional<std::filesystem::path> subprogram_file(const std::string& name) const;
+  void bind_parameters(std::size_t file, const std::vector<std::optional<double>>& arguments, std::uint32_t column);
+  std::string message_text(const Item& msg, const SBlock& b);
   bool return_from_subprogram();
   void cycle(const Item& call, const SBlock& b, bool modal_call);
   void hole_pattern(const Item& call, const SBlock& b);
@@ -70,6 +91,8 @@ class Runner {
   };
   std::vector<Structure> structures_;
   void run_cycle_here(std::uint32_t column);
+  void measure(const Item& word, const SBlock& b, NeutralBlock& nb, std::optional<double> x, std::optional<double> y,
+               std::optional<double> z, bool arc);
 
   const Options& options_;
   lowering::DialectTable table_;
@@ -90,6 +113,7 @@ class Runner {
   int plane_ = 17;
   Point3 tangent_{1, 0, 0};
   bool have_tangent_ = false;
+  int measured_probe_ = 0;  // MEAS/MEAW in the block being run: its probe
   std::optional<std::string> modal_cycle_;  // MCALL
   std::map<std::string, double> modal_cycle_args_;
   std::string cycle_name_;
@@ -112,7 +136,7 @@ std::size_t Runner::add_file(ProgramText text) {
     }
     std::size_t q = p;
     while (q < l.size() && ident_char(l[q])) ++q;
-    if (q > p && q == colon && lowering::is_alpha(l[p])) f.labels.emplace(up(l.substr(p, q - p)), i);
+    if (q > p && q == colon && lowering::is_alpha(l[p])) f.labels[up(l.substr(p, q - p))].push_back(i);
   }
   files_.push_back(std::move(f));
   std::size_t index = files_.size() - 1;
@@ -123,6 +147,7 @@ std::size_t Runner::add_file(ProgramText text) {
 void Runner::run(ProgramText program) {
   // R parameters exist from the start, at 0 (as on the control)
   for (int i = 0; i < 1000; ++i) m_.parameters().set_named("_r" + std::to_string(i), 0.0);
+  for (int probe = 1; probe <= 2; ++probe) m_.parameters().set_named(Reader::measured_key(probe), 0.0);
   add_file(std::move(program));
   m_.at(0, files_[0].text.name, 0);
   m_.start();
@@ -145,6 +170,7 @@ bool Runner::step() {
                        open.kind + " without its " + end);
     }
     if (options_.require_program_end) m_.fail(1, "File ended with no program end (M30/M2)");
+    m_.warn(1, "File ended with no program end (M30/M2): the program ends here");
     return false;
   }
   if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
@@ -163,37 +189,100 @@ bool Runner::step() {
   return run_block(b);
 }
 
+// GOTOF searches forward from the block for the label, GOTOB backward, GOTO (and GOTOC) forward
+// and then backward: a label written in several sections is the nearest one that way.
 void Runner::jump(const std::string& label, const std::string& how, std::uint32_t column) {
   const File& f = files_[file_];
   auto it = f.labels.find(label);
   if (it == f.labels.end()) m_.fail(column, how + " " + label + ": no label " + label + ": in this program");
-  std::size_t here = pc_ - 1;
-  if (how == "GOTOF" && it->second <= here) m_.fail(column, "GOTOF " + label + ": the label is not after this block");
-  if (how == "GOTOB" && it->second >= here) m_.fail(column, "GOTOB " + label + ": the label is not before this block");
-  pc_ = it->second;
+  const std::size_t here = pc_ - 1;
+  std::optional<std::size_t> forward, backward;
+  for (std::size_t line : it->second) {
+    if (line > here && !forward) forward = line;
+    if (line < here) backward = line;
+  }
+  if (how == "GOTOF" && !forward) m_.fail(column, "GOTOF " + label + ": the label is not after this block");
+  if (how == "GOTOB" && !backward) m_.fail(column, "GOTOB " + label + ": the label is not before this block");
+  if (how == "GOTOB") pc_ = *backward;
+  else if (forward) pc_ = *forward;
+  else if (backward) pc_ = *backward;
+  else m_.fail(column, how + " " + label + ": the label is this block");
 }
 
-void Runner::call_subprogram(const std::string& name, int repeats, std::uint32_t column) {
-  if (calls_.size() >= 16) m_.fail(column, "Too many nested subprogram calls");
+std::optional<std::filesystem::path> Runner::subprogram_file(const std::string& name) const {
   std::vector<std::filesystem::path> dirs = options_.subroutine_path;
+  dirs.push_back(std::filesystem::path(files_[file_].text.name).parent_path());
   dirs.push_back(std::filesystem::path(files_[0].text.name).parent_path());
   for (const auto& dir : dirs) {
     for (const char* ext : {".SPF", ".spf", ".MPF", ".mpf", ""}) {
       std::filesystem::path candidate = (dir.empty() ? std::filesystem::path(".") : dir) / (name + ext);
       std::error_code ec;
-      if (!std::filesystem::is_regular_file(candidate, ec)) continue;
-      std::size_t index = files_.size();
-      for (std::size_t i = 0; i < files_.size(); ++i) {
-        if (files_[i].text.name == candidate.string()) index = i;
-      }
-      if (index == files_.size()) index = add_file(ProgramText::from_file(candidate));
-      calls_.push_back(Call{file_, pc_, 0, repeats - 1});
-      file_ = index;
-      pc_ = 0;
-      return;
+      if (std::filesystem::is_regular_file(candidate, ec)) return candidate;
     }
   }
-  m_.fail(column, "Subprogram " + name + " not found (" + name + ".SPF in the subroutine path or beside the program)");
+  return std::nullopt;
+}
+
+void Runner::call_subprogram(const std::string& name, int repeats, std::uint32_t column,
+                             const std::vector<std::optional<double>>& arguments) {
+  if (calls_.size() >= 16) m_.fail(column, "Too many nested subprogram calls");
+  const auto candidate = subprogram_file(name);
+  if (!candidate) {
+    m_.fail(column, "Subprogram " + name + " not found (" + name + ".SPF in the subroutine path or beside the program)");
+  }
+  std::size_t index = files_.size();
+  for (std::size_t i = 0; i < files_.size(); ++i) {
+    if (files_[i].text.name == candidate->string()) index = i;
+  }
+  if (index == files_.size()) index = add_file(ProgramText::from_file(*candidate));
+  bind_parameters(index, arguments, column);
+  calls_.push_back(Call{file_, pc_, 0, repeats - 1});
+  file_ = index;
+  pc_ = 0;
+}
+
+// The called program's PROC NAME(INT A, REAL B) takes the call's arguments in order; an argument
+// left out keeps the parameter at 0 (the control's default for an unassigned value).
+void Runner::bind_parameters(std::size_t file, const std::vector<std::optional<double>>& arguments,
+                             std::uint32_t column) {
+  const ProgramText& text = files_[file].text;
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < text.size() && i < 64; ++i) {
+    std::string_view l = text.line(i);
+    std::size_t p = 0;
+    while (p < l.size() && (l[p] == ' ' || l[p] == '\t')) ++p;
+    if (p >= l.size() || l[p] == ';') continue;
+    SBlock proc;
+    reader_.declared_.clear();
+    reader_.read(l, static_cast<std::uint32_t>(i + 1), text.name, proc);
+    if (proc.control == "PROC") names = proc.proc_parameters;
+    break;
+  }
+  if (arguments.size() > names.size()) {
+    m_.fail(column, "Call with " + std::to_string(arguments.size()) + " arguments: " + text.name + " declares " +
+                        std::to_string(names.size()) + " (PROC)");
+  }
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    variables_.insert(names[i]);
+    const double v = i < arguments.size() && arguments[i] ? *arguments[i] : 0.0;
+    m_.parameters().set_named(Reader::variable_key(names[i]), v);
+  }
+}
+
+std::string Runner::message_text(const Item& msg, const SBlock& b) {
+  if (msg.message.empty()) return msg.text;
+  std::string text;
+  for (const auto& [part, value] : msg.message) {
+    if (value == kNoExpr) {
+      text += part;
+      continue;
+    }
+    const double v = eval(b, value);
+    char number[64];
+    std::snprintf(number, sizeof number, "%.6g", v);
+    text += number;
+  }
+  return text;
 }
 
 bool Runner::return_from_subprogram() {
@@ -236,11 +325,14 @@ bool Runner::run_block(SBlock& b) {
   std::vector<const Item*> gs, ms;
   bool supa = false, g53 = false, cip = false, ct = false;
   std::optional<std::string> frame_op;
+  std::uint32_t frame_column = 1;
   const Item* cycle_call = nullptr;
   const Item* pattern_call = nullptr;
   const Item* milling_call = nullptr;
   bool mcall = false, program_return = false;
   std::string subprogram;
+  std::vector<std::optional<double>> sub_arguments;
+  bool shopmill_end = false;
   std::optional<std::string> goto_label, goto_how;
   std::uint32_t goto_column = 0, sub_column = 0;
   for (const Item& it : b.items) {
@@ -263,7 +355,24 @@ bool Runner::run_block(SBlock& b) {
       case Item::Kind::Call: {
         const std::string& n = it.name;
         if (n == "MSG") {
-          if (!it.text.empty()) m_.message(it.text);
+          const std::string text = message_text(it, b);
+          if (!text.empty()) m_.message(text);
+        } else if (n == "E_HEAD") {
+          // the ShopMill step program's header (blank, retraction plane, safety clearance):
+          // it moves nothing; the steps that would use it are refused below
+          m_.comment("ncbridge: ShopMill program header E_HEAD read (no motion)");
+        } else if (n == "E_END") {
+          shopmill_end = true;
+        } else if ((n.rfind("E_", 0) == 0 || n.rfind("F_", 0) == 0) && n.size() > 2) {
+          m_.fail(it.column, "ShopMill step " + n + " (" + shopmill_step_name(n) +
+                                 "): the positional parameters of ShopMill's steps are not published, and "
+                                 "ncbridge does not guess them (save the program as G code from ShopMill, or "
+                                 "post it with CYCLE61/CYCLE81-89/POCKET3/4 and explicit moves)");
+        } else if (n == "CYCLE832") {
+          // high speed settings: the first parameter is the contour tolerance (0: deselect)
+          const double tolerance = !it.arguments.empty() && it.arguments[0] != kNoExpr ? eval(b, it.arguments[0]) : 0.0;
+          nb.g(64, it.column);
+          if (tolerance > 0) nb.add('p', tolerance, it.column);
         } else if (table_.cycles.count(n)) {
           cycle_call = &it;
         } else if (table_.patterns.count(n)) {
@@ -285,8 +394,16 @@ bool Runner::run_block(SBlock& b) {
           }
         } else if (std::find(table_.ignored_calls.begin(), table_.ignored_calls.end(), n) != table_.ignored_calls.end()) {
           // no effect on the canonical toolpath
+        } else if (subprogram_file(n)) {
+          // NAME(3600, 600), L140(2): a subprogram with PROC parameters
+          subprogram = n;
+          sub_column = it.column;
+          for (ExprRef a : it.arguments) {
+            sub_arguments.push_back(a == kNoExpr ? std::nullopt : std::optional<double>(eval(b, a)));
+          }
         } else {
-          m_.fail(it.column, n + "(...) is not a call ncbridge supports");
+          m_.fail(it.column, n + "(...) is neither a cycle ncbridge supports nor a subprogram file " + n +
+                                 ".SPF in the subroutine path or beside the program");
         }
         break;
       }
@@ -295,7 +412,10 @@ bool Runner::run_block(SBlock& b) {
         if (n == "SUPA") supa = true;
         else if (n == "CIP") cip = true;
         else if (n == "CT") ct = true;
-        else if (n == "TRANS" || n == "ATRANS" || n == "ROT" || n == "AROT") frame_op = n;
+        else if (n == "TRANS" || n == "ATRANS" || n == "ROT" || n == "AROT") {
+          frame_op = n;
+          frame_column = it.column;
+        }
         else if (n == "MCALL") mcall = true;
         else if (n == "RET") program_return = true;
         else if (n == "GOTOF" || n == "GOTOB" || n == "GOTO" || n == "GOTOC") {
@@ -306,6 +426,12 @@ bool Runner::run_block(SBlock& b) {
           incremental_ = n == "G91";
         } else if (std::find(table_.ignored_calls.begin(), table_.ignored_calls.end(), n) != table_.ignored_calls.end()) {
         } else if (n == "DEF") {
+        } else if (n == "CALL") {
+          if (it.text.empty()) m_.fail(it.column, "CALL needs a program name");
+          subprogram = it.text;
+          sub_column = it.column;
+        } else if (n == "BSPLINE" || n == "ASPLINE" || n == "CSPLINE") {
+          m_.fail(it.column, "not supported: spline interpolation " + n + " (a subprogram of that name is not called)");
         } else if (subprogram.empty() && n.size() > 0) {
           subprogram = n;  // a named subprogram call: PART1
           sub_column = it.column;
@@ -317,7 +443,8 @@ bool Runner::run_block(SBlock& b) {
     }
   }
   static const std::set<std::string> kWords = {"X", "Y", "Z", "A", "B", "C", "I", "J", "K", "I1", "J1", "K1", "CR",
-                                                "AR", "F", "S", "T", "D", "L", "P", "TURN", "RPL", "AP", "RP"};
+                                                "AR", "F", "S", "T", "D", "L", "P", "TURN", "RPL", "AP", "RP",
+                                                "MEAS", "MEAW"};
   for (const auto& [name, item] : words) {
     if (!kWords.count(name)) m_.fail(item->column, "Address " + name + " is not supported");
   }
@@ -364,7 +491,10 @@ bool Runner::run_block(SBlock& b) {
   for (const Item* mi : ms) {
     double code = eval(b, mi->value);
     const lowering::CodeEntry* e = table_.m(code);
-    if (e == nullptr) m_.fail(mi->column, "M" + lowering::code_key(code) + " is not a SINUMERIK M code ncbridge supports");
+    if (e == nullptr) {
+      if (m_.machine_function(code, mi->column)) continue;
+      m_.fail(mi->column, "M" + lowering::code_key(code) + " is not a SINUMERIK M code ncbridge supports");
+    }
     if (e->meta == "subprogram_return") program_return = true;
     else if (e->rs274) nb.m(static_cast<int>(*e->rs274), mi->column);
   }
@@ -411,7 +541,13 @@ bool Runner::run_block(SBlock& b) {
     } else {
       std::optional<double> angle = v("RPL");
       if (!angle) angle = v("Z");
-      if (v("X") || v("Y")) m_.fail(1, *frame_op + " about X or Y (a tilted plane) is not supported");
+      for (const char* axis : {"X", "Y"}) {
+        if (auto a = v(axis); a && *a != 0) {
+          m_.fail(frame_column, *frame_op + " " + axis + ": the working plane turned about " + axis +
+                                    " (an angle head or a swivelled spindle) is not supported: ncbridge converts "
+                                    "three-axis machining with the tool along Z");
+        }
+      }
       if (*frame_op == "ROT") m_.frame = lowering::Frame{{0, 0, 0}, angle.value_or(0)};
       else m_.frame.rotation_deg += angle.value_or(0);
     }
@@ -471,6 +607,8 @@ bool Runner::run_block(SBlock& b) {
       nb.g(53, col);
       nb.g(motion_ == 1 ? 1 : 0, col);
     }
+  } else if (words.count("MEAS") || words.count("MEAW")) {
+    measure(words.count("MEAS") ? *words["MEAS"] : *words["MEAW"], b, nb, x, y, z, cip || ct || motion_ == 2 || motion_ == 3);
   } else if (has_axes || polar_x || ((cip || ct || motion_ == 2 || motion_ == 3) &&
                               (words.count("I") || words.count("J") || words.count("AR") || words.count("CR")))) {
     for (const char* n : {"A", "B", "C"}) {
@@ -574,6 +712,10 @@ bool Runner::run_block(SBlock& b) {
     }
   }
   if (m_.execute(nb)) return false;
+  if (measured_probe_ != 0) {
+    m_.parameters().set_named(Reader::measured_key(measured_probe_), 1.0);
+    measured_probe_ = 0;
+  }
 
   if (milling_call) {
     if (mcall) m_.fail(milling_call->column, "MCALL " + milling_call->name + ": a modal pocket cycle is not supported");
@@ -590,11 +732,36 @@ bool Runner::run_block(SBlock& b) {
   if (!subprogram.empty()) {
     int repeats = 1;
     if (auto p = value_of("P")) repeats = static_cast<int>(std::lround(*p));
-    call_subprogram(subprogram, repeats, sub_column);
+    call_subprogram(subprogram, repeats, sub_column, sub_arguments);
     return true;
+  }
+  if (shopmill_end) {
+    // E_END: the end of the ShopMill step program
+    NeutralBlock end;
+    end.m(30, col);
+    return !m_.execute(end);
   }
   if (program_return) return return_from_subprogram();
   return true;
+}
+
+// MEAS=n / MEAW=n with a straight move: measuring with probe n (1 or 2), on its rising edge
+// (contact) when n > 0, its falling edge (contact lost) when n < 0. MEAS stops the axes at the
+// trigger, MEAW lets them reach the end point; both are read as a probe move (LinuxCNC's G38.3,
+// G38.5 for a falling edge) whose trigger position, taken as the end point, is what
+// $AA_MW[axis] reads afterwards (#5061..), with $AC_MEA[n] = 1.
+void Runner::measure(const Item& word, const SBlock& b, NeutralBlock& nb, std::optional<double> x,
+                     std::optional<double> y, std::optional<double> z, bool arc) {
+  const double n = eval(b, word.value);
+  const int probe = static_cast<int>(std::lround(std::fabs(n)));
+  if (probe < 1 || probe > 2 || std::fabs(std::fabs(n) - probe) > 1e-9) {
+    m_.fail(word.column, word.name + "=" + lowering::code_key(n) + ": the probe is 1 or 2 (-1, -2: falling edge)");
+  }
+  if (arc) m_.fail(word.column, "not supported: measuring (" + word.name + "=) on a circle");
+  if (!x && !y && !z) m_.fail(word.column, word.name + "= needs an X, Y or Z end point");
+  nb.g(n > 0 ? 38.3 : 38.5, word.column);
+  m_.put_axes(nb, x, y, z, word.column);
+  measured_probe_ = probe;
 }
 
 // Skips forward from the current block to the first of `ends` at the same nesting depth
@@ -637,7 +804,9 @@ bool Runner::run_control(SBlock& b) {
   auto top_is = [&](const char* kind) {
     return !structures_.empty() && structures_.back().kind == kind && structures_.back().file == file_;
   };
-  if (c == "ELSE") {
+  if (c == "PROC" || c == "EXTERN") {
+    // PROC: the parameters were bound by the call; EXTERN declares a called program's signature
+  } else if (c == "ELSE") {
     // the IF branch ran to here: on after the ENDIF
     skip_structure({"IF"}, {"ENDIF"}, col);
   } else if (c == "ENDIF") {

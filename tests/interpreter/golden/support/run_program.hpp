@@ -16,9 +16,10 @@ struct RunOptions {
   std::filesystem::path working_directory;  // empty: the caller's
   std::vector<std::string> extra_environment;  // "NAME=value" entries added to the caller's
   bool discard_output = false;  // standard output to /dev/null (ProgramRun::out stays empty)
+  std::filesystem::path standard_input;  // a file read as standard input; empty: /dev/null
 };
 
-// argv[0] is the executable path. Standard input is /dev/null. Throws std::runtime_error when the
+// argv[0] is the executable path. Standard input is options.standard_input or /dev/null. Throws std::runtime_error when the
 // program cannot be started.
 ProgramRun run_program(const std::vector<std::string>& argv, const RunOptions& options = {});
 

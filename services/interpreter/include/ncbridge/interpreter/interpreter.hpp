@@ -5,11 +5,13 @@
 // delivered to the sink stay delivered (callers that write files write atomically).
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "ncbridge/canonical/call.hpp"
+#include "ncbridge/common/error.hpp"
 #include "ncbridge/setup/tool_list.hpp"
 
 namespace ncbridge::interpreter {
@@ -32,6 +34,15 @@ struct Options {
   // program was posted in mm/s (FreeCAD's Heidenhain post). Never guessed from the values.
   enum class FeedUnits { PerMinute, PerSecond };
   FeedUnits heidenhain_feed_units = FeedUnits::PerMinute;
+  // What the interpreter reads although the controller's data is missing or the construct has
+  // no motion of its own (G43 without a tool list, a machine builder's M code) is reported
+  // here, with the place in the program. Unset: not reported.
+  std::function<void(const SourceLocation& where, const std::string& message)> warning;
+  // Refuse (a located InputError) what would otherwise be read with a warning.
+  bool strict = false;
+  // M codes that are the machine builder's machine functions (no motion), beyond the dialect
+  // table's list (`machine_functions:`): read with a warning.
+  std::vector<int> machine_functions;
 };
 
 // Interprets the program in `program`, streaming calls into `sink` (source_file, call..., end).

@@ -27,6 +27,9 @@ struct StepncWriteOptions {
   std::string file_name;                // FILE_NAME.name
   std::vector<std::string> description{"ISO 14649 CC1 program written by ncbridge"};
   std::optional<std::int64_t> unix_time;  // unset: SOURCE_DATE_EPOCH, else the clock
+  // FILE_NAME.preprocessor_version and originating_system; empty: "ncbridge <version>".
+  std::string preprocessor_version;
+  std::string originating_system;
 };
 
 // The instance graph of a project (header filled from the options).

@@ -1,0 +1,33 @@
+# cmake -DNCBRIDGE=bin/ncbridge -DTEMPLATE=man/ncbridge.1.in -DOUTPUT=ncbridge.1 -DVERSION=x.y.z -P
+# Fills the man page template: @VERSION@, and @COMMANDS@ with each command's --help text (so the
+# page lists exactly the commands and options of the build).
+function(roff_text text out)
+  string(REPLACE "\\" "\\e" text "${text}")
+  string(REPLACE "-" "\\-" text "${text}")
+  string(REGEX REPLACE "(^|\n)([.'])" "\\1\\\\&\\2" text "${text}")
+  set(${out} "${text}" PARENT_SCOPE)
+endfunction()
+
+execute_process(COMMAND ${NCBRIDGE} --help OUTPUT_VARIABLE help RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "${NCBRIDGE} --help failed (${rc})")
+endif()
+string(FIND "${help}" "Subcommands:\n" at)
+string(SUBSTRING "${help}" ${at} -1 listing)
+string(REGEX MATCHALL "\n  [a-z][-a-z0-9]*" names "${listing}")
+set(commands "")
+foreach(name IN LISTS names)
+  string(STRIP "${name}" name)
+  execute_process(COMMAND ${NCBRIDGE} ${name} --help OUTPUT_VARIABLE text RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${NCBRIDGE} ${name} --help failed (${rc})")
+  endif()
+  # The exit status footer is said once, in EXIT STATUS.
+  string(REGEX REPLACE "\n*Exit status:[^\n]*\n*$" "\n" text "${text}")
+  roff_text("${text}" text)
+  string(APPEND commands ".SS ${name}\n.nf\n${text}.fi\n")
+endforeach()
+file(READ ${TEMPLATE} page)
+string(REPLACE "@VERSION@" "${VERSION}" page "${page}")
+string(REPLACE "@COMMANDS@" "${commands}" page "${page}")
+file(WRITE ${OUTPUT} "${page}")
