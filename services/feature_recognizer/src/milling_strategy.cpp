@@ -415,7 +415,21 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
     out.strategy = Strategy::Plunge;
     return out;
   }
-  for (const auto& run : runs) out.closed_loops += count_closed_loops(run, 2 * std::max(tool_r, 0.5));
+  // Loops whose box is under two tool diameters each way are a trochoid's (adaptive clearing
+  // cuts in small loops); the loops of contours run along the area's boundary.
+  int large_loops = 0;
+  for (const auto& run : runs) {
+    std::vector<std::pair<std::size_t, std::size_t>> ranges;
+    out.closed_loops += count_closed_loops(run, 2 * std::max(tool_r, 0.5), &ranges);
+    for (const auto& [from, to] : ranges) {
+      double x0 = run[from].x, x1 = x0, y0 = run[from].y, y1 = y0;
+      for (std::size_t i = from; i <= to; ++i) {
+        x0 = std::min(x0, run[i].x), x1 = std::max(x1, run[i].x);
+        y0 = std::min(y0, run[i].y), y1 = std::max(y1, run[i].y);
+      }
+      if (std::max(x1 - x0, y1 - y0) >= 4 * tool_r) ++large_loops;
+    }
+  }
 
   // Every move on one straight line (once, or back and forth): a slot along its centre line.
   if (on_one_line(straights)) {
@@ -450,8 +464,9 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
     return out;
   }
 
-  // Many separate passes at one level, or mostly short curved moves: adaptive clearing.
-  if (layer.paths.size() >= 4 && out.closed_loops <= 1) {
+  // Many separate passes at one level that close no loop along a boundary (small trochoid loops
+  // do not count): adaptive clearing.
+  if (layer.paths.size() >= 4 && large_loops <= 1) {
     out.strategy = Strategy::Adaptive;
     return out;
   }

@@ -719,6 +719,102 @@ def variations():
                p, tools, stock((-3, -3, -30), (123, 93, 0), (0, 0, -30), (120, 90, 0), "part_top_corner"), features)
 
 
+# ---------------------------------------------------------------- (h) Fusion 360 / HSM style
+
+def trochoid_lane(prog, a, b, y, loop_r, advance, z, entry_top, f, plunge):
+    """Adaptive (trochoidal) clearing along one lane as HSM posts it: a helical ramp into the
+    material at the lane's start (turns of 1 mm down to the level), then loops, each two
+    half-circles advancing by `advance`, and a lift at the end (no full retract)."""
+    prog.go_to(a + loop_r, y, entry_top)
+    zz = entry_top + 0.5
+    prog.feed(a + loop_r, y, zz, plunge)
+    while zz - 1.0 > z + 1e-9:
+        zz -= 1.0
+        prog.arc(True, a + loop_r, y, zz, a, y, plunge)
+    prog.arc(True, a + loop_r, y, z, a, y, plunge)
+    prog.feed(a, y - loop_r, z, f)
+    x = a
+    while x + advance <= b + 1e-9:
+        prog.arc(True, x + advance / 2, y + loop_r, z, x + advance / 4, y, f)
+        prog.arc(True, x + advance, y - loop_r, z, x + 3 * advance / 4, y, f)
+        x += advance
+    prog.arc(True, x, y + loop_r, z, x, y, f)
+    prog.arc(True, x, y - loop_r, z, x, y, f)
+    prog.rapid(z=z + 1)
+
+
+def faced_with_arc_links(prog, x0, x1, ys, z, f, plunge):
+    """Facing in passes along X joined by half-circles outside the stock (HSM's facing)."""
+    prog.go_to(x0, ys[0], z)
+    prog.feed(x0, ys[0], z, plunge)
+    here, there = x0, x1
+    for k, y in enumerate(ys):
+        prog.feed(there, y, z, f)
+        if k + 1 < len(ys):
+            ny = ys[k + 1]
+            prog.arc(there > here, there, ny, z, there, (y + ny) / 2, f)
+            here, there = there, here
+    prog.retract()
+
+
+def hsm_style():
+    tools = [tool(1, "FaceMill_D40", "face_mill", 40, 3000, 1200, 400),
+             tool(2, "EndMill_D10", "flat_end_mill", 10, 9000, 1800, 400),
+             tool(3, "EndMill_D4", "flat_end_mill", 4, 14000, 500, 150),
+             tool(4, "SpotDrill_D10", "spot_drill", 10, 3000, 150, 150, tip_angle=90),
+             tool(5, "Drill_D6.8", "twist_drill", 6.8, 2200, 180, 180, tip_angle=118)]
+    p = Program(safe=15, clearance=2)
+    # face 1 mm: three passes along X, half-circle links beyond the stock
+    p.tool(1, 3000)
+    faced_with_arc_links(p, -25, 125, [8, 33, 58], 0.0, 1200, 400)
+    # 50 x 30 R6 pocket at (30, 35), 8 deep: adaptive lanes along X with the D10 (0.3 left),
+    # each lane ramped in by a helix; then rest-machined and finished with the D4 (contour)
+    p.tool(2, 9000)
+    c, hl, hw = (30.0, 35.0), 25.0, 15.0
+    loop_r, advance = 2.5, 1.5
+    reach = 5 + 0.3 + loop_r
+    lanes = [c[1] - hw + reach + k * (2 * (hw - reach)) / 3 for k in range(4)]
+    for z in (-4.0, -8.0):
+        for y in lanes:
+            trochoid_lane(p, c[0] - hl + reach, c[0] + hl - reach, y, loop_r, advance, z, z + 4.0, 1800, 400)
+        p.retract()
+    p.tool(3, 14000)
+    start, segs = rounded_rectangle(c, hl - 2, hw - 2, 4, 0, ccw=True)
+    contour_levels(p, start, segs, [-4.0, -8.0], 0, 500, 150)
+    # four through holes: spotted (G81, 1.5 deep), peck drilled through (G83)
+    holes = [(72, 15), (90, 15), (72, 55), (90, 55)]
+    p.tool(4, 3000)
+    p.cycle("G81", holes, -1.5, 2, 150)
+    p.tool(5, 2200)
+    p.cycle("G83", holes, -17.5, 2, 180, "Q3.000 ")
+    # outside profile 100 x 70 R5: roughed in three depths leaving 0.3, finished in two
+    p.tool(2, 9000)
+    start, segs = rounded_rectangle((50, 35), 50 + 5.3, 35 + 5.3, 5.3, 0, ccw=False)
+    contour_levels(p, start, segs, [-5.0, -10.0, -15.3], 0, 1800, 400)
+    start, segs = rounded_rectangle((50, 35), 50 + 5, 35 + 5, 5, 0, ccw=False)
+    contour_levels(p, start, segs, [-7.5, -15.3], 0, 1200, 400)
+    features = [
+        feature("F1", "planar_face", (50, 35), 1.0, 0.0, [op("plane_finish_milling", 1, "bidirectional")]),
+        feature("F2", "closed_pocket", c, 0.0, -8.0,
+                [op("bottom_and_side_rough_milling", 2, "adaptive"), op("bottom_and_side_finish_milling", 3, "contour")],
+                shape="rounded_rectangle", dimensions={"length": 50, "width": 30, "corner_radius": 6, "angle_deg": 0}),
+    ] + [
+        feature("F%d" % (3 + k), "round_hole", h, 0.0, -15.0,
+                [op("center_drilling", 4, "plunge"), op("multistep_drilling", 5, "plunge")],
+                dimensions={"diameter": 6.8}, bottom_condition="through")
+        for k, h in enumerate(holes)
+    ] + [
+        feature("F7", "general_outside_profile", (50, 35), 0.0, -15.0,
+                [op("side_rough_milling", 2, "contour"), op("side_finish_milling", 2, "contour")],
+                outline="rectangle 100 x 70 R5"),
+    ]
+    write_part("p13_hsm_style", "100x70x15 part from a 104x74x16 blank, zero at the top front left corner, cut as "
+               "Fusion 360 / HSM posts it: facing with half-circle links, a 50x30 R6 pocket by adaptive "
+               "(trochoidal) lanes each ramped in by a helix, rest-machined and finished with a smaller tool, holes "
+               "spot drilled then peck drilled, the outside profile roughed then finished in depths",
+               p, tools, stock((-2, -2, -15), (102, 72, 1), (0, 0, -15), (100, 70, 0), "part_top_corner"), features)
+
+
 if __name__ == "__main__":
     nested_pockets()
     helix_holes()
@@ -727,3 +823,4 @@ if __name__ == "__main__":
     plate()
     slots()
     variations()
+    hsm_style()
