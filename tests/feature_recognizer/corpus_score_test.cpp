@@ -72,7 +72,7 @@ INSTANTIATE_TEST_SUITE_P(Parts, CorpusScore,
                                          "p04_open_pockets", "p05_slots", "paper_face_mill", "paper_test_part",
                                          "p06_nested_pockets", "p07_helix_holes", "p08_multi_level", "p09_small_part",
                                          "p10_plate", "p11_slots_rotated_pocket", "p12_freecad_style",
-                                         "p13_hsm_style"));
+                                         "p13_hsm_style", "p14_shop_program"));
 
 TEST(PaperPrograms, FaceMillIsExactlyOneBidirectionalPlanarFaceOfDepthFive) {
   const auto features = ts::recognize_case(named("paper_face_mill"));

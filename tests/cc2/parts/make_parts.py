@@ -815,6 +815,146 @@ def hsm_style():
                p, tools, stock((-2, -2, -15), (102, 72, 1), (0, 0, -15), (100, 70, 0), "part_top_corner"), features)
 
 
+# ---------------------------------------------------------------- (i) a hand-written shop program
+
+SHOP_PROGRAM = """%
+(shop program, written at the machine: subprograms, loops, incremental moves, canned cycles)
+G17 G21 G40 G49 G80 G90 G94
+G54
+(face the saw-cut block, 0.5 mm, two passes)
+M6 T1
+G43 H1
+M3 S2000
+G0 X-35 Y20 Z10
+G1 Z0 F300
+G1 X155 F900
+G1 Y60
+G1 X-35
+G0 Z10
+(pocket 40 x 24 R4 at 35/40: zigzag per depth in a subprogram, 0.3 left on the walls)
+o100 sub
+  G0 X[#1] Y[#2]
+  G1 Z[#3 + 1] F200
+  G1 Z#3
+  G91
+  #10 = 0
+  o110 while [#10 LT 4]
+    G1 X[#4] F700
+    G1 Y[#5]
+    G1 X[-#4]
+    G1 Y[#5]
+    #10 = [#10 + 1]
+  o110 endwhile
+  G1 X[#4]
+  G90
+  G0 Z10
+o100 endsub
+M6 T2
+G43 H2
+M3 S6000
+G0 X19.3 Y32.3 Z10
+o120 repeat [1]
+  o100 call [19.3] [32.3] [-3] [31.4] [1.925]
+o120 endrepeat
+o100 call [19.3] [32.3] [-6] [31.4] [1.925]
+(finish the pocket walls with the 6 mm cutter, radius compensation on the drawn outline)
+M6 T3
+G43 H3
+M3 S8000
+G0 X35 Y40 Z10
+G1 Z-6 F150
+G41 D3 G1 X35 Y52 F500
+G1 X19
+G3 X15 Y48 I0 J-4
+G1 Y32
+G3 X19 Y28 I4 J0
+G1 X51
+G3 X55 Y32 I0 J4
+G1 Y48
+G3 X51 Y52 I-4 J0
+G1 X35
+G40 G1 X35 Y40
+G0 Z10
+(bolt circle: six holes on R20 about 90/40, spotted then drilled through, one subprogram)
+o200 sub
+  #10 = 0
+  o210 while [#10 LT 6]
+    #11 = [90 + 20 * COS[#10 * 60]]
+    #12 = [40 + 20 * SIN[#10 * 60]]
+    o220 if [#1 EQ 1]
+      G98 G82 X#11 Y#12 Z-2 R2 P0.2 F100
+    o220 else
+      G98 G81 X#11 Y#12 Z-23 R2 F150
+    o220 endif
+    #10 = [#10 + 1]
+  o210 endwhile
+  G80
+o200 endsub
+M6 T4
+G43 H4
+M3 S2500
+G0 Z10
+o200 call [1]
+M6 T5
+G43 H5
+M3 S1800
+G0 Z10
+o200 call [2]
+(keyway slot 10 wide along X at Y68, 4 deep: plunged back and forth, incremental)
+M6 T6
+G43 H6
+M3 S5000
+G0 X15 Y68 Z10
+G1 Z0.5 F200
+G1 Z-2
+G91 G1 X40 F400
+G90 G1 Z-4 F200
+G91 G1 X-40 F400
+G90 G0 Z10
+M5
+G0 Z50
+M30
+%
+"""
+
+
+def shop_program():
+    tools = [tool(1, "FaceMill_D63", "face_mill", 63, 2000, 900, 300),
+             tool(2, "EndMill_D8", "flat_end_mill", 8, 6000, 700, 200),
+             tool(3, "EndMill_D6", "flat_end_mill", 6, 8000, 500, 150),
+             tool(4, "SpotDrill_D12", "spot_drill", 12, 2500, 100, 100, tip_angle=90),
+             tool(5, "Drill_D8.5", "twist_drill", 8.5, 1800, 150, 150, tip_angle=118),
+             tool(6, "EndMill_D10", "flat_end_mill", 10, 5000, 400, 200)]
+
+    class Text:
+        def text(self):
+            return SHOP_PROGRAM
+
+    holes = [(round(90 + 20 * math.cos(math.radians(60 * k)), 4), round(40 + 20 * math.sin(math.radians(60 * k)), 4))
+             for k in range(6)]
+    features = [
+        feature("F1", "planar_face", (60, 40), 0.5, 0.0, [op("plane_finish_milling", 1, "bidirectional")]),
+        feature("F2", "closed_pocket", (35, 40), 0.0, -6.0,
+                [op("bottom_and_side_rough_milling", 2, "bidirectional"), op("bottom_and_side_finish_milling", 3, "contour")],
+                shape="rounded_rectangle", dimensions={"length": 40, "width": 24, "corner_radius": 4, "angle_deg": 0}),
+    ] + [
+        feature("F%d" % (3 + k), "round_hole", h, 0.0, -20.0,
+                [op("center_drilling", 4, "plunge"), op("drilling", 5, "plunge")],
+                dimensions={"diameter": 8.5}, bottom_condition="through")
+        for k, h in enumerate(holes)
+    ] + [
+        feature("F9", "slot", (35, 68), 0.0, -4.0, [op("bottom_and_side_rough_milling", 6, "center_milling")],
+                shape="closed_slot_round_ends", end_conditions=["closed_radiused", "closed_radiused"],
+                dimensions={"width": 10, "length_overall": 50}),
+    ]
+    write_part("p14_shop_program", "120x80x20 saw-cut block faced 0.5, zero at the top front left corner, written by "
+               "hand as at the machine: a zigzag subprogram called per depth (incremental moves, a while loop, a "
+               "repeat), the pocket walls finished with cutter radius compensation (G41) on the drawn outline, a "
+               "bolt circle of six holes computed in a loop and spotted (G82) then drilled (G81) by one subprogram "
+               "called twice, a keyway plunged back and forth in incremental moves",
+               Text(), tools, stock((0, 0, -20), (120, 80, 0.5), (0, 0, -20), (120, 80, 0), "part_top_corner"), features)
+
+
 if __name__ == "__main__":
     nested_pockets()
     helix_holes()
@@ -824,3 +964,4 @@ if __name__ == "__main__":
     slots()
     variations()
     hsm_style()
+    shop_program()
