@@ -67,6 +67,40 @@ TEST_P(CorpusScore, OperationsOfTheMatchedFeaturesAgreeWithTruth) {
   EXPECT_EQ(ops.recognized, ops.truth);
 }
 
+// A closed pocket finished by passes along its boundary (contour, contour parallel, or a zigzag
+// with a contour) has its profile set by the toolpath: length, width, corner radius or
+// diameter within 0.02 mm of the design. (A zigzag alone leaves its corners to the stepover;
+// FreeCAD's adaptive path is itself a polyline within its own tolerance.)
+TEST_P(CorpusScore, ClosedPocketProfilesWithin002mmWhereTheToolpathSetsThem) {
+  const auto c = named(GetParam());
+  const auto features = ts::recognize_case(c);
+  const auto truth = fr::read_truth(c.truth, c.truth_program);
+  int compared = 0;
+  for (const auto& m : fr::score(features, truth).matches) {
+    const auto& t = truth[m.truth_index];
+    const auto& r = features[m.recognized_index];
+    if (t.type != fr::FeatureType::ClosedPocket || r.operations.empty()) continue;
+    const auto last = r.operations.back().strategy;
+    if (last != fr::Strategy::Contour && last != fr::Strategy::ContourParallel &&
+        last != fr::Strategy::BidirectionalContour && last != fr::Strategy::ContourBidirectional) {
+      continue;
+    }
+    if (t.profile_diameter) {
+      EXPECT_EQ(r.profile.shape, fr::ProfileShape::Circular) << t.id;
+      EXPECT_NEAR(r.profile.diameter, *t.profile_diameter, 0.02) << t.id;
+      ++compared;
+    }
+    if (t.length && t.width && t.corner_radius) {
+      EXPECT_EQ(r.profile.shape, fr::ProfileShape::Rectangular) << t.id;
+      EXPECT_NEAR(r.profile.length, *t.length, 0.02) << t.id;
+      EXPECT_NEAR(r.profile.width, *t.width, 0.02) << t.id;
+      EXPECT_NEAR(r.profile.corner_radius, *t.corner_radius, 0.02) << t.id;
+      ++compared;
+    }
+  }
+  RecordProperty("compared", std::to_string(compared));
+}
+
 INSTANTIATE_TEST_SUITE_P(Parts, CorpusScore,
                          testing::Values("p01_block_reference", "p02_plate_center_zero", "p03_bracket_steps",
                                          "p04_open_pockets", "p05_slots", "paper_face_mill", "paper_test_part",

@@ -1,6 +1,10 @@
 #include "profile_fit.hpp"
 
 #include <algorithm>
+#include <array>
+#include <optional>
+#include <utility>
+#include <vector>
 #include <cmath>
 #include <numbers>
 
@@ -24,6 +28,62 @@ Ring convex_hull(Ring pts) {
   }
   hull.resize(k - 1);
   return hull;
+}
+
+// Least-squares circle through points (Kåsa's algebraic fit); nullopt when they are collinear.
+std::optional<std::pair<Point2, double>> fit_circle(const std::vector<Point2>& pts) {
+  if (pts.size() < 3) return std::nullopt;
+  double mx = 0, my = 0;
+  for (const auto& p : pts) mx += p.x, my += p.y;
+  mx /= static_cast<double>(pts.size()), my /= static_cast<double>(pts.size());
+  double suu = 0, svv = 0, suv = 0, suuu = 0, svvv = 0, suvv = 0, svuu = 0;
+  for (const auto& p : pts) {
+    const double u = p.x - mx, v = p.y - my;
+    suu += u * u, svv += v * v, suv += u * v;
+    suuu += u * u * u, svvv += v * v * v, suvv += u * v * v, svuu += v * u * u;
+  }
+  const double det = suu * svv - suv * suv;
+  if (std::abs(det) < 1e-12 * std::max(1.0, suu * svv)) return std::nullopt;
+  const double bu = (suuu + suvv) / 2, bv = (svvv + svuu) / 2;
+  const double uc = (bu * svv - bv * suv) / det, vc = (bv * suu - bu * suv) / det;
+  const Point2 c{mx + uc, my + vc};
+  double r = 0;
+  for (const auto& p : pts) r += std::hypot(p.x - c.x, p.y - c.y);
+  return std::pair{c, r / static_cast<double>(pts.size())};
+}
+
+// Every vertex of a swept area lies on or inside the exact one, within the chord tolerance (the
+// tool disk and the arcs are inscribed polygons), so the farthest vertex from the fitted centre
+// is the arc's radius, where the mean would be short of it by up to that tolerance.
+double farthest(const std::vector<Point2>& pts, Point2 c) {
+  double r = 0;
+  for (const auto& p : pts) r = std::max(r, std::hypot(p.x - c.x, p.y - c.y));
+  return r;
+}
+
+// The corner radius of a rounded rectangle from the outline's vertices at its four corners:
+// in the rectangle's frame, those beyond the tangent points of a corner of radius `estimate`
+// (with a margin), a circle fitted to each corner's; the mean of the four. Nullopt when a
+// corner has too few vertices to fit or the fits disagree (not a rounded rectangle's corners).
+std::optional<double> corner_radius_from_vertices(const Ring& outline, const OrientedRectangle& rect, double estimate) {
+  const double a = rect.angle_deg * std::numbers::pi / 180, ux = std::cos(a), uy = std::sin(a);
+  const double hl = rect.length / 2, hw = rect.width / 2, zone = 1.1 * estimate + 0.05;
+  std::array<std::vector<Point2>, 4> corners;
+  for (const auto& p : outline) {
+    const double dx = p.x - rect.center.x, dy = p.y - rect.center.y;
+    const double u = dx * ux + dy * uy, v = -dx * uy + dy * ux;
+    if (std::abs(u) < hl - zone || std::abs(v) < hw - zone) continue;
+    corners[(u > 0 ? 1 : 0) + (v > 0 ? 2 : 0)].push_back({u, v});
+  }
+  double sum = 0, lo = 1e300, hi = 0;
+  for (const auto& pts : corners) {
+    const auto circle = fit_circle(pts);
+    if (!circle) return std::nullopt;
+    const double r = farthest(pts, circle->first);
+    sum += r, lo = std::min(lo, r), hi = std::max(hi, r);
+  }
+  if (hi - lo > 0.05 * hi + 0.02) return std::nullopt;
+  return sum / 4;
 }
 
 }  // namespace
@@ -88,7 +148,8 @@ Profile fit_closed_profile(const Ring& outline, double area) {
   const double circle_area = std::numbers::pi * rect.length * rect.width / 4;
   if (rect.width > 0.98 * rect.length && std::abs(area - circle_area) < 0.02 * circle_area) {
     profile.shape = ProfileShape::Circular;
-    profile.diameter = (rect.length + rect.width) / 2;
+    const auto circle = fit_circle(outline);
+    profile.diameter = circle ? 2 * farthest(outline, circle->first) : (rect.length + rect.width) / 2;
     profile.angle_deg = 0;
     return profile;
   }
@@ -100,7 +161,9 @@ Profile fit_closed_profile(const Ring& outline, double area) {
     const double expected_perimeter = 2 * (rect.length + rect.width) - (8 - 2 * std::numbers::pi) * r;
     if (std::abs(perimeter(outline) - expected_perimeter) < 0.02 * expected_perimeter) {
       profile.shape = ProfileShape::Rectangular;
-      profile.corner_radius = r < 0.05 ? 0 : r;
+      const auto fitted = r >= 0.5 ? corner_radius_from_vertices(outline, rect, r) : std::nullopt;
+      const double radius = fitted ? *fitted : r;
+      profile.corner_radius = radius < 0.05 ? 0 : radius;
       return profile;
     }
   }

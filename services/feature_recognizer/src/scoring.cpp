@@ -88,6 +88,16 @@ TruthFeature read_feature(const nlohmann::json& j, const std::string& file) {
   if (j.contains("dimensions") && j["dimensions"].contains("diameter") && t.type == FeatureType::RoundHole) {
     t.diameter = j["dimensions"]["diameter"].get<double>();
   }
+  if (j.contains("dimensions") && j["dimensions"].is_object() && t.type == FeatureType::ClosedPocket) {
+    const auto& d = j["dimensions"];
+    auto read = [&](const char* key, std::optional<double>& into) {
+      if (d.contains(key) && d[key].is_number()) into = d[key].get<double>();
+    };
+    read("length", t.length);
+    read("width", t.width);
+    read("corner_radius", t.corner_radius);
+    read("diameter", t.profile_diameter);
+  }
   if (j.contains("operations") && j["operations"].is_array()) {
     for (const auto& o : j["operations"]) t.operations.push_back(read_operation(o, file, t.id));
   } else if (j.contains("machined_by") && j["machined_by"].is_array()) {

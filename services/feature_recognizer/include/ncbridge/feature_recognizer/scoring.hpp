@@ -40,6 +40,9 @@ struct TruthFeature {
   FeatureType type = FeatureType::Region;
   double x = 0, y = 0, top_z = 0, bottom_z = 0;
   std::optional<double> diameter;  // round holes
+  // A closed pocket's profile as the truth states it (its "dimensions"): a rounded rectangle's
+  // length, width and corner radius, or a circle's diameter.
+  std::optional<double> length, width, corner_radius, profile_diameter;
   bool closed = false;
   std::vector<TruthOperation> operations;  // empty when the truth does not list them
 };
