@@ -75,8 +75,8 @@ int main(int argc, char** argv) {
           std::printf("    found %-24s at (%8.3f, %8.3f) z %7.3f..%7.3f d %6.3f", std::string(fr::to_string(f.type)).c_str(),
                       f.x, f.y, f.top_z, f.bottom_z, f.diameter);
           if (f.profile.shape != fr::ProfileShape::None) {
-            std::printf("  profile L %.4f W %.4f R %.4f angle %.2f D %.4f", f.profile.length, f.profile.width,
-                        f.profile.corner_radius, f.profile.angle_deg, f.profile.diameter);
+            std::printf("  profile L %.4f W %.4f R %.4f C %.4f angle %.2f D %.4f", f.profile.length, f.profile.width,
+                        f.profile.corner_radius, f.profile.corner_chamfer, f.profile.angle_deg, f.profile.diameter);
           }
           for (const auto& op : f.operations) {
             std::printf("  [%s T%d %s]", std::string(fr::to_string(op.type)).c_str(), op.tool_number,

@@ -49,7 +49,7 @@ std::vector<Case> corpus() {
           // Hand-designed parts of other shapes and strategies (parts/make_parts.py).
           part("p06_nested_pockets"), part("p07_helix_holes"), part("p08_multi_level"), part("p09_small_part"),
           part("p10_plate"), part("p11_slots_rotated_pocket"), part("p12_freecad_style"), part("p13_hsm_style"),
-          part("p14_shop_program")};
+          part("p14_shop_program"), part("p15_hobby_style")};
 }
 
 Case named(const std::string& name) {
@@ -200,7 +200,7 @@ INSTANTIATE_TEST_SUITE_P(Parts, CommentFreeCorpus,
                                          "p04_open_pockets", "p05_slots", "paper_face_mill", "paper_test_part",
                                          "p06_nested_pockets", "p07_helix_holes", "p08_multi_level", "p09_small_part",
                                          "p10_plate", "p11_slots_rotated_pocket", "p12_freecad_style",
-                                         "p13_hsm_style", "p14_shop_program"));
+                                         "p13_hsm_style", "p14_shop_program", "p15_hobby_style"));
 
 TEST(Cc2Convert, SameInputSameBytes) {
   const Case c = named("paper_test_part");

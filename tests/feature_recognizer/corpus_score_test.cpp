@@ -68,10 +68,12 @@ TEST_P(CorpusScore, OperationsOfTheMatchedFeaturesAgreeWithTruth) {
 }
 
 // A closed pocket finished by passes along its boundary (contour, contour parallel, or a zigzag
-// with a contour) has its profile set by the toolpath: length, width, corner radius or
-// diameter within 0.02 mm of the design. (A zigzag alone leaves its corners to the stepover;
-// FreeCAD's adaptive path is itself a polyline within its own tolerance.)
-TEST_P(CorpusScore, ClosedPocketProfilesWithin002mmWhereTheToolpathSetsThem) {
+// with a contour) has its outline set by the toolpath: length, width, corner radius or 45° corner
+// chamfer, or diameter within 0.02 mm of the design; so has an outside profile (the part's
+// outline, cut by a contour). Chamfered corners are chamfers, not radii. (A zigzag alone leaves
+// a pocket's corners to the stepover; FreeCAD's adaptive path is itself a polyline within its
+// own tolerance.)
+TEST_P(CorpusScore, ClosedOutlinesWithin002mmWhereTheToolpathSetsThem) {
   const auto c = named(GetParam());
   const auto features = ts::recognize_case(c);
   const auto truth = fr::read_truth(c.truth, c.truth_program);
@@ -79,10 +81,14 @@ TEST_P(CorpusScore, ClosedPocketProfilesWithin002mmWhereTheToolpathSetsThem) {
   for (const auto& m : fr::score(features, truth).matches) {
     const auto& t = truth[m.truth_index];
     const auto& r = features[m.recognized_index];
-    if (t.type != fr::FeatureType::ClosedPocket || r.operations.empty()) continue;
-    const auto last = r.operations.back().strategy;
-    if (last != fr::Strategy::Contour && last != fr::Strategy::ContourParallel &&
-        last != fr::Strategy::BidirectionalContour && last != fr::Strategy::ContourBidirectional) {
+    if (r.operations.empty()) continue;
+    if (t.type == fr::FeatureType::ClosedPocket) {
+      const auto last = r.operations.back().strategy;
+      if (last != fr::Strategy::Contour && last != fr::Strategy::ContourParallel &&
+          last != fr::Strategy::BidirectionalContour && last != fr::Strategy::ContourBidirectional) {
+        continue;
+      }
+    } else if (t.type != fr::FeatureType::GeneralOutsideProfile) {
       continue;
     }
     if (t.profile_diameter) {
@@ -90,11 +96,19 @@ TEST_P(CorpusScore, ClosedPocketProfilesWithin002mmWhereTheToolpathSetsThem) {
       EXPECT_NEAR(r.profile.diameter, *t.profile_diameter, 0.02) << t.id;
       ++compared;
     }
-    if (t.length && t.width && t.corner_radius) {
-      EXPECT_EQ(r.profile.shape, fr::ProfileShape::Rectangular) << t.id;
+    if (t.length && t.width) {
       EXPECT_NEAR(r.profile.length, *t.length, 0.02) << t.id;
       EXPECT_NEAR(r.profile.width, *t.width, 0.02) << t.id;
+    }
+    if (t.length && t.width && t.corner_radius) {
+      EXPECT_EQ(r.profile.shape, fr::ProfileShape::Rectangular) << t.id;
       EXPECT_NEAR(r.profile.corner_radius, *t.corner_radius, 0.02) << t.id;
+      ++compared;
+    }
+    if (t.length && t.width && t.corner_chamfer) {
+      EXPECT_EQ(r.profile.shape, fr::ProfileShape::GeneralClosed) << t.id;
+      EXPECT_EQ(r.profile.corner_radius, 0) << t.id;
+      EXPECT_NEAR(r.profile.corner_chamfer, *t.corner_chamfer, 0.02) << t.id;
       ++compared;
     }
   }
@@ -106,7 +120,7 @@ INSTANTIATE_TEST_SUITE_P(Parts, CorpusScore,
                                          "p04_open_pockets", "p05_slots", "paper_face_mill", "paper_test_part",
                                          "p06_nested_pockets", "p07_helix_holes", "p08_multi_level", "p09_small_part",
                                          "p10_plate", "p11_slots_rotated_pocket", "p12_freecad_style",
-                                         "p13_hsm_style", "p14_shop_program"));
+                                         "p13_hsm_style", "p14_shop_program", "p15_hobby_style"));
 
 TEST(PaperPrograms, FaceMillIsExactlyOneBidirectionalPlanarFaceOfDepthFive) {
   const auto features = ts::recognize_case(named("paper_face_mill"));

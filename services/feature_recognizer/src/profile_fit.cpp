@@ -86,6 +86,31 @@ std::optional<double> corner_radius_from_vertices(const Ring& outline, const Ori
   return sum / 4;
 }
 
+// How far the outline stands in from each corner of the rectangle: the distance from the
+// corner to the nearest outline edge, mean of the four. A rounded corner of radius r stands
+// (√2 − 1) r in and lacks (4 − π)/4 r² of the rectangle; a 45° chamfer of leg c stands c/√2 in
+// and lacks c²/2. For one inset the two missing areas differ by a quarter, so the area the
+// outline lacks tells a chamfer from a radius.
+double mean_corner_inset(const Ring& outline, const OrientedRectangle& rect) {
+  const double a = rect.angle_deg * std::numbers::pi / 180, ux = std::cos(a), uy = std::sin(a);
+  const double hl = rect.length / 2, hw = rect.width / 2;
+  double total = 0;
+  for (const double su : {-1.0, 1.0}) {
+    for (const double sv : {-1.0, 1.0}) {
+      const Point2 corner{rect.center.x + su * hl * ux - sv * hw * uy, rect.center.y + su * hl * uy + sv * hw * ux};
+      double nearest = 1e300;
+      for (std::size_t i = 0; i < outline.size(); ++i) {
+        const Point2 p = outline[i], q = outline[(i + 1) % outline.size()];
+        const double dx = q.x - p.x, dy = q.y - p.y, len2 = dx * dx + dy * dy;
+        const double t = len2 > 0 ? std::clamp(((corner.x - p.x) * dx + (corner.y - p.y) * dy) / len2, 0.0, 1.0) : 0.0;
+        nearest = std::min(nearest, std::hypot(p.x + t * dx - corner.x, p.y + t * dy - corner.y));
+      }
+      total += nearest;
+    }
+  }
+  return total / 4;
+}
+
 }  // namespace
 
 double perimeter(const Ring& ring) {
@@ -155,6 +180,21 @@ Profile fit_closed_profile(const Ring& outline, double area) {
   }
   // A rounded rectangle lacks (4 - pi) r^2 of its enclosing rectangle.
   const double missing = std::max(0.0, rect.length * rect.width - area);
+  // Chamfered corners (45°): the inset along the diagonals accounts for the missing area as
+  // chamfers (2 c², c = √2 × inset) and not as radii (5.0 × inset²). The outline is kept exact
+  // as a general closed profile; the tool's radius rounding a pocket's chamfer ends adds little.
+  const double inset = mean_corner_inset(outline, rect);
+  if (inset > 0.1) {
+    const double as_chamfer = 4 * inset * inset, as_radius = (4 - std::numbers::pi) * std::pow(inset / (std::sqrt(2.0) - 1), 2);
+    const double leg = std::sqrt(2.0) * inset;
+    const double expected_perimeter = 2 * (rect.length + rect.width) - (8 - 4 * std::sqrt(2.0)) * leg;
+    if (std::abs(missing - as_chamfer) < std::abs(missing - as_radius) && std::abs(missing - as_chamfer) < 0.1 * as_chamfer &&
+        std::abs(perimeter(outline) - expected_perimeter) < 0.02 * expected_perimeter) {
+      profile.shape = ProfileShape::GeneralClosed;
+      profile.corner_chamfer = leg;
+      return profile;
+    }
+  }
   const double r = std::sqrt(missing / (4 - std::numbers::pi));
   if (r <= rect.width / 2 + 1e-6) {
     // The radius matches the area by construction; the perimeter confirms the shape.

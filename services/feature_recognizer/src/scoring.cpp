@@ -88,7 +88,8 @@ TruthFeature read_feature(const nlohmann::json& j, const std::string& file) {
   if (j.contains("dimensions") && j["dimensions"].contains("diameter") && t.type == FeatureType::RoundHole) {
     t.diameter = j["dimensions"]["diameter"].get<double>();
   }
-  if (j.contains("dimensions") && j["dimensions"].is_object() && t.type == FeatureType::ClosedPocket) {
+  if (j.contains("dimensions") && j["dimensions"].is_object() &&
+      (t.type == FeatureType::ClosedPocket || t.type == FeatureType::GeneralOutsideProfile)) {
     const auto& d = j["dimensions"];
     auto read = [&](const char* key, std::optional<double>& into) {
       if (d.contains(key) && d[key].is_number()) into = d[key].get<double>();
@@ -96,6 +97,14 @@ TruthFeature read_feature(const nlohmann::json& j, const std::string& file) {
     read("length", t.length);
     read("width", t.width);
     read("corner_radius", t.corner_radius);
+    read("corner_chamfer", t.corner_chamfer);
+    // The CAM parts state an outside profile's sides along x and y.
+    std::optional<double> along_x, along_y;
+    read("length_x", along_x);
+    read("width_y", along_y);
+    if (along_x && along_y) t.length = std::max(*along_x, *along_y), t.width = std::min(*along_x, *along_y);
+    if (t.corner_chamfer && *t.corner_chamfer <= 0) t.corner_chamfer.reset();  // none
+    if (t.corner_chamfer) t.corner_radius.reset();
     read("diameter", t.profile_diameter);
   }
   if (j.contains("operations") && j["operations"].is_array()) {

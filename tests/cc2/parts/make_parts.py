@@ -806,7 +806,7 @@ def hsm_style():
     ] + [
         feature("F7", "general_outside_profile", (50, 35), 0.0, -15.0,
                 [op("side_rough_milling", 2, "contour"), op("side_finish_milling", 2, "contour")],
-                outline="rectangle 100 x 70 R5"),
+                outline="rectangle 100 x 70"),
     ]
     write_part("p13_hsm_style", "100x70x15 part from a 104x74x16 blank, zero at the top front left corner, cut as "
                "Fusion 360 / HSM posts it: facing with half-circle links, a 50x30 R6 pocket by adaptive "
@@ -955,6 +955,151 @@ def shop_program():
                Text(), tools, stock((0, 0, -20), (120, 80, 0.5), (0, 0, -20), (120, 80, 0), "part_top_corner"), features)
 
 
+# ---------------------------------------------------------------- (j) hobby CAM style (Estlcam, Carbide Create)
+
+def chamfered_rectangle(c, half_l, half_w, leg):
+    """The eight corners (CCW) of a rectangle whose corners are cut at 45 degrees, legs `leg`."""
+    x0, x1, y0, y1 = c[0] - half_l, c[0] + half_l, c[1] - half_w, c[1] + half_w
+    return [(x1 - leg, y0), (x1, y0 + leg), (x1, y1 - leg), (x1 - leg, y1), (x0 + leg, y1), (x0, y1 - leg),
+            (x0, y0 + leg), (x0 + leg, y0)]
+
+
+def offset_convex(poly, d):
+    """A convex CCW polygon's edges moved by d (inward when d > 0), neighbours intersected: the
+    tool centre's path along the inside of the polygon (sharp corners; the tool rounds them)."""
+    lines = []
+    for k in range(len(poly)):
+        (ax, ay), (bx, by) = poly[k], poly[(k + 1) % len(poly)]
+        L = math.hypot(bx - ax, by - ay)
+        nx, ny = -(by - ay) / L, (bx - ax) / L  # left normal: inside of a CCW polygon
+        lines.append(((ax + nx * d, ay + ny * d), (bx - ax, by - ay)))
+    out = []
+    for k in range(len(lines)):
+        (p, r), (q, s) = lines[k - 1], lines[k]
+        den = r[0] * s[1] - r[1] * s[0]
+        t = ((q[0] - p[0]) * s[1] - (q[1] - p[1]) * s[0]) / den
+        out.append((p[0] + t * r[0], p[1] + t * r[1]))
+    # an edge that the offset turned round has vanished: its half-plane no longer bounds the ring
+    keep = []
+    for k in range(len(poly)):
+        a, b = out[k], out[(k + 1) % len(out)]
+        if (b[0] - a[0]) * lines[k][1][0] + (b[1] - a[1]) * lines[k][1][1] > 1e-9:
+            keep.append(poly[k:k + 2] if k + 1 < len(poly) else [poly[k], poly[0]])
+    if len(keep) == len(poly):
+        return out
+    short = [e for e in keep]
+    pts = []
+    for k in range(len(short)):
+        pts.append(short[k][0])
+    # the polygon of the remaining edges' lines (the vanished edges' corners extended)
+    return offset_convex(extend_edges(short), d)
+
+
+def extend_edges(edges):
+    """The convex polygon bounded by the lines of `edges` (each a pair of points, CCW order)."""
+    out = []
+    for k in range(len(edges)):
+        (a0, a1), (b0, b1) = edges[k - 1], edges[k]
+        r = (a1[0] - a0[0], a1[1] - a0[1])
+        s_ = (b1[0] - b0[0], b1[1] - b0[1])
+        den = r[0] * s_[1] - r[1] * s_[0]
+        t = ((b0[0] - a0[0]) * s_[1] - (b0[1] - a0[1]) * s_[0]) / den
+        out.append((a0[0] + t * r[0], a0[1] + t * r[1]))
+    return out
+
+
+def outside_path(poly, d):
+    """The tool centre's path around the outside of a convex CCW polygon at distance d, as a
+    hobby CAM posts it: straight offsets joined by arcs about the corners (clockwise, climb)."""
+    n = len(poly)
+    segs = []
+    for k in range(n):
+        (ax, ay), (bx, by) = poly[k], poly[(k + 1) % n]
+        L = math.hypot(bx - ax, by - ay)
+        nx, ny = (by - ay) / L, -(bx - ax) / L  # right normal: outside of a CCW polygon
+        segs.append(((ax + nx * d, ay + ny * d), (bx + nx * d, by + ny * d), poly[(k + 1) % n]))
+    # run them backwards (clockwise): each edge reversed, then an arc about the corner before it
+    return segs
+
+
+def hobby_style():
+    tools = [tool(1, "EndMill_D6", "flat_end_mill", 6, 18000, 1200, 300),
+             tool(2, "EndMill_D3", "flat_end_mill", 3, 20000, 800, 200)]
+    p = Program(safe=5, clearance=1)
+    p.tool(1, 18000)
+    # pocket 40 x 24 with 5 mm 45-degree corner chamfers at (35, 30), 6 deep: offset rings of the
+    # octagon from the outside in, a ramp along the first side at each level, 2 mm per level
+    c = (35.0, 30.0)
+    poly = chamfered_rectangle(c, 20, 12, 5)
+    rings = []
+    d = 3.0
+    while 12 - d > 0.5:
+        rings.append(offset_convex(poly, d))
+        d += 2.5
+    prev = 0.0
+    for z in (-2.0, -4.0, -6.0):
+        a = rings[0][0]
+        b = rings[0][1]
+        p.go_to(a[0], a[1], prev)
+        p.feed(a[0], a[1], prev, 300)
+        p.feed(b[0], b[1], z, 300)   # ramp along the first side
+        p.feed(a[0], a[1], z, 1200)  # back at the level
+        for ring in rings:
+            p.feed(ring[0][0], ring[0][1], z, 1200)
+            for q in ring[1:] + [ring[0]]:
+                p.feed(q[0], q[1], z, 1200)
+        p.retract()
+        prev = z
+    # holes D3 drilled by the end mill in G1 pecks (no canned cycle): 2 mm each, up 1 mm between
+    p.tool(2, 20000)
+    holes = [(70, 10), (70, 50), (85, 30)]
+    for (hx, hy) in holes:
+        p.go_to(hx, hy, 0.0)
+        last = 0.0
+        for depth in (-2.0, -4.0, -6.0, -8.5):
+            if last < 0:
+                p.rapid(z=last + 0.5)  # back down to 0.5 above the last peck's depth
+            p.feed(hx, hy, depth, 200)
+            p.rapid(z=1.0)
+            last = depth
+        p.retract()
+    # outside profile 100 x 60 with 6 mm 45-degree corner chamfers, 8 deep (the plate's bottom)
+    # in four levels: the octagon at a tool radius, arcs about its corners, clockwise
+    p.tool(1, 18000)
+    outline = chamfered_rectangle((50, 30), 50, 30, 6)
+    segs = outside_path(outline, 3.0)
+    start = segs[-1][1]
+    prev = 0.0
+    for z in (-2.0, -4.0, -6.0, -8.3):
+        p.go_to(start[0], start[1], prev)
+        p.feed(start[0], start[1], z, 300)
+        for k in range(len(segs) - 1, -1, -1):
+            a, b, corner = segs[k]
+            p.feed(a[0], a[1], z, 1200)  # along edge k backwards, to its start
+            prev_edge = segs[k - 1]
+            p.arc(False, prev_edge[1][0], prev_edge[1][1], z, outline[k][0], outline[k][1], 1200)
+        p.retract()
+        prev = z
+    features = [
+        feature("F1", "closed_pocket", c, 0.0, -6.0, [op("bottom_and_side_rough_milling", 1, "contour_parallel")],
+                shape="rectangle_chamfered_corners", dimensions={"length": 40, "width": 24, "corner_chamfer": 5, "angle_deg": 0}),
+    ] + [
+        feature("F%d" % (2 + k), "round_hole", h, 0.0, -8.0, [op("multistep_drilling", 2, "plunge")],
+                dimensions={"diameter": 3}, bottom_condition="through")
+        for k, h in enumerate(holes)
+    ] + [
+        feature("F5", "general_outside_profile", (50, 30), 0.0, -8.0, [op("side_finish_milling", 1, "contour")],
+                outline="rectangle 100 x 60, corners chamfered 6 x 45 degrees",
+                dimensions={"length": 100, "width": 60, "corner_chamfer": 6}),
+    ]
+    write_part("p15_hobby_style", "100x60x8 plate from a 110x70x8 blank, zero at the top front left corner, cut as "
+               "hobby CAM (Estlcam, Carbide Create) posts it: two end mills and no canned cycles, a 40x24 pocket "
+               "with 5 mm 45-degree corner chamfers cleared by offset rings with a ramp along the first side, "
+               "through holes drilled by an end mill in G1 pecks, the outside profile with 6 mm corner chamfers "
+               "cut in step-downs with arcs about its corners",
+               p, tools, stock((-5, -5, -8), (105, 65, 0), (0, 0, -8), (100, 60, 0), "part_top_corner"), features)
+
+
 if __name__ == "__main__":
     nested_pockets()
     helix_holes()
@@ -965,3 +1110,4 @@ if __name__ == "__main__":
     variations()
     hsm_style()
     shop_program()
+    hobby_style()

@@ -40,9 +40,10 @@ struct TruthFeature {
   FeatureType type = FeatureType::Region;
   double x = 0, y = 0, top_z = 0, bottom_z = 0;
   std::optional<double> diameter;  // round holes
-  // A closed pocket's profile as the truth states it (its "dimensions"): a rounded rectangle's
-  // length, width and corner radius, or a circle's diameter.
-  std::optional<double> length, width, corner_radius, profile_diameter;
+  // A closed pocket's or an outside profile's outline as the truth states it (its
+  // "dimensions"): a rectangle's length, width and corner radius or 45° corner chamfer, or a
+  // circle's diameter.
+  std::optional<double> length, width, corner_radius, corner_chamfer, profile_diameter;
   bool closed = false;
   std::vector<TruthOperation> operations;  // empty when the truth does not list them
 };
