@@ -52,8 +52,12 @@ int count_closed_loops(const std::vector<Point2>& run, double min_length,
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   // The points passed since the last loop closed, by cell: the latest in each cell, and before
   // each point the one it followed in its cell (linked lists in one array, no list per cell).
+  // Entries before `loop_start` belong to loops already closed: they are passed over, not
+  // erased (clearing the table at every loop cost its whole bucket array each time).
   std::unordered_map<std::uint64_t, std::size_t> latest;
+  latest.reserve(run.size());
   std::vector<std::size_t> previous_in_cell(run.size(), kNone);
+  std::size_t loop_start = 0;
   int loops = 0;
   std::vector<double> along(run.size(), 0);
   for (std::size_t i = 0; i < run.size(); ++i) {
@@ -65,7 +69,7 @@ int count_closed_loops(const std::vector<Point2>& run, double min_length,
       for (long long dy = -1; dy <= 1 && !closes; ++dy) {
         auto it = latest.find(key(c.first + dx, c.second + dy));
         if (it == latest.end()) continue;
-        for (std::size_t j = it->second; j != kNone; j = previous_in_cell[j]) {
+        for (std::size_t j = it->second; j != kNone && j >= loop_start; j = previous_in_cell[j]) {
           if (along[i] - along[j] > min_length && planar_distance(run[i].x - run[j].x, run[i].y - run[j].y) < kClose) {
             closes = true;
             from = j;
@@ -77,11 +81,11 @@ int count_closed_loops(const std::vector<Point2>& run, double min_length,
     if (closes) {
       ++loops;
       if (ranges) ranges->emplace_back(from, i);
-      latest.clear();  // the next loop starts here
+      loop_start = i;  // the next loop starts here
     }
     auto [it, inserted] = latest.try_emplace(key(c.first, c.second), i);
     if (!inserted) {
-      previous_in_cell[i] = it->second;
+      previous_in_cell[i] = it->second >= loop_start ? it->second : kNone;
       it->second = i;
     }
   }
