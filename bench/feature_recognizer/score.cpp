@@ -1,5 +1,6 @@
 // Recognises every program of the recognition corpus and prints, per part, the recognised
-// features and the per-type precision / recall / F1 against truth; then the totals.
+// features and the per-type precision / recall / F1 against truth, and how many of the truth's
+// operations of the matched features agree (type, tool, strategy); then the totals.
 //   usage: feature_recognition_score [--verbose] [--reports DIR] [source_dir shared_dir]
 // With --reports, the features are not recognised here but read from DIR/<case>.json, the
 // reports of `ncbridge convert --level cc2` (end to end through our interpreter;
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
   std::map<fr::FeatureType, fr::TypeScore> totals;
   double error_sum = 0;
   int matches = 0;
+  fr::TypeScore operations;
   try {
     for (const auto& c : ncbridge::test_support::recognition_corpus(source, shared)) {
       const auto features = reports.empty() ? ncbridge::test_support::recognize_case(c)
@@ -61,11 +63,21 @@ int main(int argc, char** argv) {
       const auto s = fr::score(features, truth);
       std::printf("%s: F1 %.3f (%d truth, %d found, %d matched), mean position error %.3f mm\n", c.name.c_str(),
                   s.overall.f1(), s.overall.truth, s.overall.recognized, s.overall.matched, s.mean_position_error());
+      if (reports.empty()) {
+        const auto ops = fr::score_operations(features, truth, s);
+        std::printf("  operations of the matched features: %d of %d agree with truth (type, tool, strategy)\n", ops.matched,
+                    ops.truth);
+        operations.truth += ops.truth, operations.matched += ops.matched;
+      }
       if (verbose) {
         for (std::size_t i = 0; i < features.size(); ++i) {
           const auto& f = features[i];
           std::printf("    found %-24s at (%8.3f, %8.3f) z %7.3f..%7.3f d %6.3f", std::string(fr::to_string(f.type)).c_str(),
                       f.x, f.y, f.top_z, f.bottom_z, f.diameter);
+          if (f.profile.shape != fr::ProfileShape::None) {
+            std::printf("  profile L %.4f W %.4f R %.4f C %.4f angle %.2f D %.4f", f.profile.length, f.profile.width,
+                        f.profile.corner_radius, f.profile.corner_chamfer, f.profile.angle_deg, f.profile.diameter);
+          }
           for (const auto& op : f.operations) {
             std::printf("  [%s T%d %s]", std::string(fr::to_string(op.type)).c_str(), op.tool_number,
                         std::string(fr::to_string(op.strategy)).c_str());
@@ -97,5 +109,6 @@ int main(int argc, char** argv) {
   }
   print_row("overall", all);
   std::printf("  mean position error %.3f mm over %d matches\n", matches ? error_sum / matches : 0.0, matches);
+  if (reports.empty()) std::printf("  operations: %d of %d agree with truth\n", operations.matched, operations.truth);
   return 0;
 }

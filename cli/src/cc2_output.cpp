@@ -44,6 +44,7 @@ nlohmann::ordered_json dimensions(const fr::RecognizedFeature& f) {
       d["length"] = tidy(p.length);
       d["width"] = tidy(p.width);
       if (p.shape == fr::ProfileShape::Rectangular) d["corner_radius"] = tidy(p.corner_radius);
+      if (p.corner_chamfer > 0) d["corner_chamfer"] = tidy(p.corner_chamfer);
       d["angle_deg"] = tidy(p.angle_deg);
   }
   return d;

@@ -153,6 +153,7 @@ std::string dims_text(const fr::RecognizedFeature& f) {
   if (p.shape == fr::ProfileShape::Circular) return "&#8960;" + num(p.diameter, 2);
   std::string s = num(p.length, 2) + " &#215; " + num(p.width, 2);
   if (p.shape == fr::ProfileShape::Rectangular && p.corner_radius > 0.01) s += " r" + num(p.corner_radius, 2);
+  if (p.corner_chamfer > 0.01) s += " chamfer " + num(p.corner_chamfer, 2) + " &#215; 45&#176;";
   return s;
 }
 

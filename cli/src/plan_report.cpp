@@ -181,6 +181,8 @@ fr::RecognizedOperation as_recognized(const sn::Project& project, const sn::Oper
                   else if constexpr (std::is_same_v<S, sn::Bidirectional>) return fr::Strategy::Bidirectional;
                   else if constexpr (std::is_same_v<S, sn::ContourParallel>) return fr::Strategy::ContourParallel;
                   else if constexpr (std::is_same_v<S, sn::ContourSpiral>) return fr::Strategy::ContourSpiral;
+                  else if constexpr (std::is_same_v<S, sn::BidirectionalContour>) return fr::Strategy::BidirectionalContour;
+                  else if constexpr (std::is_same_v<S, sn::ContourBidirectional>) return fr::Strategy::ContourBidirectional;
                   else return fr::Strategy::CenterMilling;
                 },
                 *o.its_machining_strategy);

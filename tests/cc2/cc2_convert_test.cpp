@@ -48,7 +48,8 @@ std::vector<Case> corpus() {
           {"paper_test_part", paper / "test_part.ngc", paper, "test_part.ngc"},
           // Hand-designed parts of other shapes and strategies (parts/make_parts.py).
           part("p06_nested_pockets"), part("p07_helix_holes"), part("p08_multi_level"), part("p09_small_part"),
-          part("p10_plate"), part("p11_slots_rotated_pocket"), part("p12_freecad_style")};
+          part("p10_plate"), part("p11_slots_rotated_pocket"), part("p12_freecad_style"), part("p13_hsm_style"),
+          part("p14_shop_program"), part("p15_hobby_style")};
 }
 
 Case named(const std::string& name) {
@@ -114,7 +115,7 @@ std::vector<fr::RecognizedFeature> report_features(const fs::path& report) {
     f.diameter = t.diameter.value_or(0);
     for (const auto& o : t.operations) {
       fr::RecognizedOperation op;
-      op.type = o.type, op.tool_number = o.tool_number, op.strategy = o.strategy.value_or(fr::Strategy::None);
+      op.type = o.type, op.tool_number = o.tool_number, op.strategy = o.strategies.empty() ? fr::Strategy::None : o.strategies.front();
       f.operations.push_back(op);
     }
     if (t.type == fr::FeatureType::Slot && !t.closed) f.slot_ends = {fr::SlotEnd::Open, fr::SlotEnd::Open};
@@ -198,7 +199,8 @@ INSTANTIATE_TEST_SUITE_P(Parts, CommentFreeCorpus,
                          testing::Values("p01_block_reference", "p02_plate_center_zero", "p03_bracket_steps",
                                          "p04_open_pockets", "p05_slots", "paper_face_mill", "paper_test_part",
                                          "p06_nested_pockets", "p07_helix_holes", "p08_multi_level", "p09_small_part",
-                                         "p10_plate", "p11_slots_rotated_pocket", "p12_freecad_style"));
+                                         "p10_plate", "p11_slots_rotated_pocket", "p12_freecad_style",
+                                         "p13_hsm_style", "p14_shop_program", "p15_hobby_style"));
 
 TEST(Cc2Convert, SameInputSameBytes) {
   const Case c = named("paper_test_part");

@@ -166,7 +166,9 @@ std::vector<Operation> every_operation() {
       ContourParallel{RotDirection::Cw, CutmodeType::Climb, std::nullopt, false},
       ContourSpiral{RotDirection::Ccw, CutmodeType::Conventional, 0.25},
       CenterMilling{},
-      CenterMilling{0.1, true}};
+      CenterMilling{0.1, true},
+      BidirectionalContour{Direction{1, 0, 0}, LeftOrRight::Left, RotDirection::Ccw, CutmodeType::Climb, 0.2, true},
+      ContourBidirectional{std::nullopt, std::nullopt, RotDirection::Cw, std::nullopt}};
   for (const Two5DMillingStrategy& s : strategies) {
     out.emplace_back(two5d<PlaneRoughMilling>(9, s));
     out.emplace_back(two5d<PlaneFinishMilling>(10, s));

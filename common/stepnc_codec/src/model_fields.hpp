@@ -122,6 +122,12 @@ template <class Ar, Is<Bidirectional> S> void fields(Ar& ar, S& v) { ar(v.feed_d
 template <class Ar, Is<ContourParallel> S> void fields(Ar& ar, S& v) { ar(v.rotation_direction, v.cutmode, v.overlap, v.allow_multiple_passes); }
 template <class Ar, Is<ContourSpiral> S> void fields(Ar& ar, S& v) { ar(v.rotation_direction, v.cutmode, v.overlap, v.allow_multiple_passes); }
 template <class Ar, Is<CenterMilling> S> void fields(Ar& ar, S& v) { ar(v.overlap, v.allow_multiple_passes); }
+template <class Ar, Is<BidirectionalContour> S> void fields(Ar& ar, S& v) {
+  ar(v.feed_direction, v.stepover_direction, v.rotation_direction, v.spiral_cutmode, v.overlap, v.allow_multiple_passes);
+}
+template <class Ar, Is<ContourBidirectional> S> void fields(Ar& ar, S& v) {
+  ar(v.feed_direction, v.stepover_direction, v.rotation_direction, v.spiral_cutmode, v.overlap, v.allow_multiple_passes);
+}
 // PLANE_ROUGH_MILLING ... BOTTOM_AND_SIDE_FINISH_MILLING add nothing to TWO5D_MILLING_OPERATION.
 template <class Ar, std::derived_from<Two5DMillingOperation> S>
 void fields(Ar& ar, S& v) {

@@ -6,8 +6,6 @@
 #include <map>
 #include <unordered_map>
 #include <numbers>
-#include <optional>
-#include <utility>
 
 namespace ncbridge::feature_recognizer {
 namespace {
@@ -44,7 +42,8 @@ std::vector<std::vector<Point2>> level_runs(const Layer& layer) {
 // A loop closes when the path comes back to a point it passed since the last loop closed,
 // at least `min_length` of path later. The points passed are kept in cells of the closing
 // distance, so each point looks at the few near it, not at the whole run.
-int count_closed_loops(const std::vector<Point2>& run, double min_length) {
+int count_closed_loops(const std::vector<Point2>& run, double min_length,
+                       std::vector<std::pair<std::size_t, std::size_t>>* ranges = nullptr) {
   constexpr double kClose = 1e-2;
   auto cell_of = [](Point2 p) {
     return std::pair{static_cast<long long>(std::floor(p.x / kClose)), static_cast<long long>(std::floor(p.y / kClose))};
@@ -53,21 +52,27 @@ int count_closed_loops(const std::vector<Point2>& run, double min_length) {
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   // The points passed since the last loop closed, by cell: the latest in each cell, and before
   // each point the one it followed in its cell (linked lists in one array, no list per cell).
+  // Entries before `loop_start` belong to loops already closed: they are passed over, not
+  // erased (clearing the table at every loop cost its whole bucket array each time).
   std::unordered_map<std::uint64_t, std::size_t> latest;
+  latest.reserve(run.size());
   std::vector<std::size_t> previous_in_cell(run.size(), kNone);
+  std::size_t loop_start = 0;
   int loops = 0;
   std::vector<double> along(run.size(), 0);
   for (std::size_t i = 0; i < run.size(); ++i) {
     if (i > 0) along[i] = along[i - 1] + planar_distance(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
     const auto c = cell_of(run[i]);
     bool closes = false;
+    std::size_t from = 0;
     for (long long dx = -1; dx <= 1 && !closes; ++dx) {
       for (long long dy = -1; dy <= 1 && !closes; ++dy) {
         auto it = latest.find(key(c.first + dx, c.second + dy));
         if (it == latest.end()) continue;
-        for (std::size_t j = it->second; j != kNone; j = previous_in_cell[j]) {
+        for (std::size_t j = it->second; j != kNone && j >= loop_start; j = previous_in_cell[j]) {
           if (along[i] - along[j] > min_length && planar_distance(run[i].x - run[j].x, run[i].y - run[j].y) < kClose) {
             closes = true;
+            from = j;
             break;
           }
         }
@@ -75,11 +80,12 @@ int count_closed_loops(const std::vector<Point2>& run, double min_length) {
     }
     if (closes) {
       ++loops;
-      latest.clear();  // the next loop starts here
+      if (ranges) ranges->emplace_back(from, i);
+      loop_start = i;  // the next loop starts here
     }
     auto [it, inserted] = latest.try_emplace(key(c.first, c.second), i);
     if (!inserted) {
-      previous_in_cell[i] = it->second;
+      previous_in_cell[i] = it->second >= loop_start ? it->second : kNone;
       it->second = i;
     }
   }
@@ -226,95 +232,159 @@ bool find_circles(const Layer& layer, StrategyAnalysis& out) {
   return true;
 }
 
-// Parallel passes sweeping across the area (bidirectional, or unidirectional when nearly all
-// run one way), with the median stepover; nothing when the moves are not such passes.
-std::optional<std::pair<Strategy, double>> parallel_passes(const std::vector<Straight>& straights, double total,
-                                                           int closed_loops, double tool_r) {
-  // Passes back and forth never come back to where they were; nested contours do, once each.
-  if (closed_loops >= 2) return std::nullopt;
-  // Direction histogram of the long straight moves (1° bins, direction modulo 180°).
+// The long straight moves (at least `min_pass`) along one direction (±1°): how many go each
+// way, and how their offsets across that direction step from one to the next. Parallel passes
+// that sweep an area progress one way (≥ 75 % of the steps); nested contours have long
+// parallel sides too, but their offsets jump from side to side.
+struct Passes {
+  int forward = 0, backward = 0, rising = 0, falling = 0;
+  std::vector<double> gaps;
+  int count() const { return forward + backward; }
+  bool progress() const { return std::max(rising, falling) >= 0.75 * (rising + falling); }
+  // Bidirectional when both senses occur (≥ ¼), else unidirectional.
+  Strategy strategy() const {
+    return std::min(forward, backward) >= std::max(1, count() / 4) ? Strategy::Bidirectional : Strategy::Unidirectional;
+  }
+  double stepover() const {  // the median offset step
+    if (gaps.empty()) return 0;
+    auto g = gaps;
+    std::nth_element(g.begin(), g.begin() + static_cast<std::ptrdiff_t>(g.size() / 2), g.end());
+    return g[g.size() / 2];
+  }
+};
+
+// The passes along the direction of the most length (1° bins, direction modulo 180°), when
+// that is more than `min_share` of `total`; with `any_direction`, along the first direction by
+// length (each over `min_share`) whose three or more passes progress (a zigzag whose links
+// along the walls are as long as its passes).
+std::optional<Passes> parallel_passes(const std::vector<Straight>& straights, double total, double min_pass,
+                                      double min_share, bool any_direction) {
   std::map<int, double> bins;
   for (const auto& s : straights) {
-    if (s.length() < tool_r) continue;
+    if (s.length() < min_pass) continue;
     double deg = std::atan2(s.b.y - s.a.y, s.b.x - s.a.x) * 180 / std::numbers::pi;
     if (deg < 0) deg += 180;
     bins[static_cast<int>(std::lround(deg)) % 180] += s.length();
   }
-  int dominant = -1;
-  double dominant_length = 0;
+  std::vector<std::pair<double, int>> directions;  // (length about it, degrees)
   for (const auto& [deg, len] : bins) {
     const double around = len + (bins.count((deg + 1) % 180) ? bins[(deg + 1) % 180] : 0) +
                           (bins.count((deg + 179) % 180) ? bins[(deg + 179) % 180] : 0);
-    if (around > dominant_length) dominant_length = around, dominant = deg;
+    directions.emplace_back(around, deg);
   }
-  const bool parallel = dominant >= 0 && dominant_length > 0.6 * total;
-
-  if (parallel) {
-    // Parallel passes sweep across the area: the offsets of successive passes move one way.
-    // Nested contours have long parallel sides too, but their offsets jump from side to side.
+  // Longest first; among equal lengths the lowest angle (the order the bins were met in).
+  std::stable_sort(directions.begin(), directions.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (const auto& [length, dominant] : directions) {
+    if (length <= min_share * total) break;
     const double ux = std::cos(dominant * std::numbers::pi / 180), uy = std::sin(dominant * std::numbers::pi / 180);
-    int forward = 0, backward = 0;
+    Passes p;
     std::vector<double> sequence;
     for (const auto& s : straights) {
       const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
       const double along = (dx * ux + dy * uy) / s.length();
-      if (std::abs(along) < std::cos(1.5 * std::numbers::pi / 180) || s.length() < tool_r) continue;
-      (along > 0 ? forward : backward)++;
+      if (std::abs(along) < std::cos(1.5 * std::numbers::pi / 180) || s.length() < min_pass) continue;
+      (along > 0 ? p.forward : p.backward)++;
       sequence.push_back(-s.a.x * uy + s.a.y * ux);
     }
-    int rising = 0, falling = 0;
-    std::vector<double> gaps;
     for (std::size_t i = 1; i < sequence.size(); ++i) {
       const double d = sequence[i] - sequence[i - 1];
       if (std::abs(d) <= 0.05) continue;
-      (d > 0 ? rising : falling)++;
-      gaps.push_back(std::abs(d));
+      (d > 0 ? p.rising : p.falling)++;
+      p.gaps.push_back(std::abs(d));
     }
-    const int parallel_moves = forward + backward;
-    if (parallel_moves == 1 && closed_loops == 0) {
-      return std::pair{Strategy::CenterMilling, 0.0};  // one straight pass: a slot along its centre line
-    }
-    // Two passes side by side (joined by a rapid, as a face milled in two passes) sweep too.
-    const bool enough = parallel_moves >= 3 || (parallel_moves == 2 && closed_loops == 0);
-    const bool sweeping = enough && std::max(rising, falling) >= 0.75 * (rising + falling);
-    if (sweeping) {
-      std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
-      const double stepover = gaps.empty() ? 0 : gaps[gaps.size() / 2];
-      return std::pair{std::min(forward, backward) >= std::max(1, parallel_moves / 4) ? Strategy::Bidirectional
-                                                                                     : Strategy::Unidirectional,
-                       stepover};
-    }
+    if (!any_direction || (p.count() >= 3 && p.progress() && !p.gaps.empty())) return p;
   }
-
   return std::nullopt;
 }
 
-// The runs without the closed loops that end them (a finishing contour after the passes).
-std::vector<std::vector<Point2>> without_finishing_contour(std::vector<std::vector<Point2>> runs, double min_length) {
-  while (!runs.empty()) {
-    auto& run = runs.back();
-    if (run.size() < 3) break;
-    // The earliest point the run's end comes back to, at least min_length of path before it.
-    double along = 0;
-    std::vector<double> at(run.size(), 0);
-    for (std::size_t i = 1; i < run.size(); ++i) at[i] = at[i - 1] + std::hypot(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
-    along = at.back();
-    std::size_t start = run.size();
-    for (std::size_t j = 0; j + 1 < run.size(); ++j) {
-      if (along - at[j] > min_length && std::hypot(run[j].x - run.back().x, run[j].y - run.back().y) < 1e-2) {
-        start = j;
-        break;
-      }
-    }
-    if (start == run.size()) break;
-    if (start == 0) {
-      runs.pop_back();
-    } else {
-      run.resize(start + 1);
-      break;
-    }
+// A zigzag whose passes are not taken in order (FreeCAD's: the outer two, then the middle):
+// at least three long moves along one direction, each at its own offset, all between the same
+// two lines across them (the area's ends), in alternating senses. Nested contours have as many
+// parallel moves, but each loop's are shorter than the one around it.
+struct Sweep {
+  Strategy strategy = Strategy::None;
+  double stepover = 0;
+};
+
+std::optional<Sweep> unordered_zigzag(const std::vector<Straight>& straights, double min_pass) {
+  std::map<int, std::vector<const Straight*>> by_direction;
+  for (const auto& s : straights) {
+    if (s.length() < min_pass) continue;
+    double deg = std::atan2(s.b.y - s.a.y, s.b.x - s.a.x) * 180 / std::numbers::pi;
+    if (deg < 0) deg += 180;
+    by_direction[static_cast<int>(std::lround(deg)) % 180].push_back(&s);
   }
-  return runs;
+  for (const auto& [deg, passes] : by_direction) {
+    if (passes.size() < 3) continue;
+    const double ux = std::cos(deg * std::numbers::pi / 180), uy = std::sin(deg * std::numbers::pi / 180);
+    auto along = [&](Point2 p) { return p.x * ux + p.y * uy; };
+    auto across = [&](Point2 p) { return -p.x * uy + p.y * ux; };
+    const double lo = std::min(along(passes.front()->a), along(passes.front()->b));
+    const double hi = std::max(along(passes.front()->a), along(passes.front()->b));
+    std::vector<double> offsets;
+    bool same_span = true, alternating = true;
+    for (std::size_t k = 0; k < passes.size() && same_span; ++k) {
+      const auto* p = passes[k];
+      same_span = std::abs(std::min(along(p->a), along(p->b)) - lo) < 0.05 && std::abs(std::max(along(p->a), along(p->b)) - hi) < 0.05 &&
+                  std::abs(across(p->a) - across(p->b)) < 0.05;
+      if (k > 0) alternating = alternating && (along(p->b) - along(p->a) > 0) != (along(passes[k - 1]->b) - along(passes[k - 1]->a) > 0);
+      offsets.push_back(across(p->a));
+    }
+    if (!same_span || !alternating) continue;
+    std::sort(offsets.begin(), offsets.end());
+    std::vector<double> gaps;
+    for (std::size_t k = 1; k < offsets.size(); ++k) gaps.push_back(offsets[k] - offsets[k - 1]);
+    if (*std::min_element(gaps.begin(), gaps.end()) <= 0.05) continue;  // two passes on one line
+    std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
+    return Sweep{Strategy::Bidirectional, gaps[gaps.size() / 2]};
+  }
+  return std::nullopt;
+}
+
+std::vector<Straight> straights_of(const std::vector<Point2>& run, std::size_t first, std::size_t last, double& total) {
+  std::vector<Straight> out;
+  for (std::size_t i = first + 1; i <= last && i < run.size(); ++i) {
+    Straight s{run[i - 1], run[i]};
+    total += s.length();
+    if (s.length() > 1e-6) out.push_back(s);
+  }
+  return out;
+}
+
+// FreeCAD's ZigZagOffset and its kin: a closed loop along the boundary (the offset contour) that
+// ends the level's path or begins it, and parallel passes sweeping the inside in the rest:
+// bidirectional-contour when the loop comes last, contour-bidirectional when first.
+std::optional<Sweep> zigzag_and_contour(const std::vector<std::vector<Point2>>& runs, double tool_r) {
+  if (runs.size() != 1 || runs.front().size() < 4) return std::nullopt;
+  const auto& run = runs.front();
+  const double min_loop = 2 * std::max(tool_r, 0.5);
+  std::vector<double> along(run.size(), 0);
+  for (std::size_t i = 1; i < run.size(); ++i) {
+    along[i] = along[i - 1] + planar_distance(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
+  }
+  auto near = [&](std::size_t a, std::size_t b) { return planar_distance(run[a].x - run[b].x, run[a].y - run[b].y) < 1e-2; };
+  auto sweeps = [&](std::size_t first, std::size_t last) -> std::optional<double> {
+    double total = 0;
+    const auto rest = straights_of(run, first, last, total);
+    const auto passes = parallel_passes(rest, total, tool_r, 0.3, true);
+    if (!passes || passes->strategy() != Strategy::Bidirectional) return std::nullopt;
+    return passes->stepover();
+  };
+  const std::size_t end = run.size() - 1;
+  // The loop that ends the path: from the first point the path's end comes back to.
+  for (std::size_t j = 0; j < end; ++j) {
+    if (along[end] - along[j] < min_loop) break;
+    if (!near(j, end)) continue;
+    if (const auto stepover = sweeps(0, j)) return Sweep{Strategy::BidirectionalContour, *stepover};
+    break;
+  }
+  // The loop that begins it: to the first point that comes back to its start.
+  for (std::size_t i = 1; i <= end; ++i) {
+    if (along[i] < min_loop || !near(0, i)) continue;
+    if (const auto stepover = sweeps(i, end)) return Sweep{Strategy::ContourBidirectional, *stepover};
+    break;
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -349,7 +419,21 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
     out.strategy = Strategy::Plunge;
     return out;
   }
-  for (const auto& run : runs) out.closed_loops += count_closed_loops(run, 2 * std::max(tool_r, 0.5));
+  // Loops whose box is under two tool diameters each way are a trochoid's (adaptive clearing
+  // cuts in small loops); the loops of contours run along the area's boundary.
+  int large_loops = 0;
+  for (const auto& run : runs) {
+    std::vector<std::pair<std::size_t, std::size_t>> ranges;
+    out.closed_loops += count_closed_loops(run, 2 * std::max(tool_r, 0.5), &ranges);
+    for (const auto& [from, to] : ranges) {
+      double x0 = run[from].x, x1 = x0, y0 = run[from].y, y1 = y0;
+      for (std::size_t i = from; i <= to; ++i) {
+        x0 = std::min(x0, run[i].x), x1 = std::max(x1, run[i].x);
+        y0 = std::min(y0, run[i].y), y1 = std::max(y1, run[i].y);
+      }
+      if (std::max(x1 - x0, y1 - y0) >= 4 * tool_r) ++large_loops;
+    }
+  }
 
   // Every move on one straight line (once, or back and forth): a slot along its centre line.
   if (on_one_line(straights)) {
@@ -357,37 +441,36 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
     return out;
   }
 
-  // Parallel passes that end with a contour round the area (the finishing pass of a
-  // bidirectional pocketing): the passes before it tell the strategy.
-  if (const auto passes = parallel_passes(straights, total, out.closed_loops, tool_r)) {
-    out.strategy = passes->first;
-    out.stepover = passes->second;
+  // Parallel passes along the direction of the most length, if that is more than 60 % of it.
+  if (const auto passes = parallel_passes(straights, total, tool_r, 0.6, false)) {
+    if (passes->count() == 1 && out.closed_loops == 0) {
+      out.strategy = Strategy::CenterMilling;  // one straight pass: a slot along its centre line
+      return out;
+    }
+    // Two passes side by side (joined by a rapid, as a face milled in two passes) sweep too.
+    const bool enough = passes->count() >= 3 || (passes->count() == 2 && out.closed_loops == 0);
+    if (enough && passes->progress()) {
+      out.stepover = passes->stepover();
+      out.strategy = passes->strategy();
+      return out;
+    }
+  }
+  // A zigzag and one contour along the boundary, in either order.
+  if (const auto both = zigzag_and_contour(runs, tool_r)) {
+    out.strategy = both->strategy;
+    out.stepover = both->stepover;
     return out;
   }
-  const auto before = without_finishing_contour(runs, 2 * std::max(tool_r, 0.5));
-  if (before.size() < runs.size() || (before.size() == runs.size() && !before.empty() && before.back().size() < runs.back().size())) {
-    std::vector<Straight> first;
-    double first_total = 0;
-    int first_loops = 0;
-    for (const auto& run : before) {
-      for (std::size_t i = 1; i < run.size(); ++i) {
-        Straight s{run[i - 1], run[i]};
-        first_total += s.length();
-        if (s.length() > 1e-6) first.push_back(s);
-      }
-      first_loops += count_closed_loops(run, 2 * std::max(tool_r, 0.5));
-    }
-    if (first_total > 0) {
-      if (const auto passes = parallel_passes(first, first_total, first_loops, tool_r)) {
-        out.strategy = passes->first;
-        out.stepover = passes->second;
-        return out;
-      }
-    }
+  // A zigzag over a rectangle whose passes are not taken in order.
+  if (const auto zigzag = unordered_zigzag(straights, tool_r)) {
+    out.strategy = zigzag->strategy;
+    out.stepover = zigzag->stepover;
+    return out;
   }
 
-  // Many separate passes at one level, or mostly short curved moves: adaptive clearing.
-  if (layer.paths.size() >= 4 && out.closed_loops <= 1) {
+  // Many separate passes at one level that close no loop along a boundary (small trochoid loops
+  // do not count): adaptive clearing.
+  if (layer.paths.size() >= 4 && large_loops <= 1) {
     out.strategy = Strategy::Adaptive;
     return out;
   }

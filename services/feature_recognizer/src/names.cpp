@@ -58,6 +58,8 @@ std::string_view to_string(Strategy strategy) {
     case Strategy::Adaptive: return "adaptive";
     case Strategy::Helical: return "helical";
     case Strategy::Plunge: return "plunge";
+    case Strategy::BidirectionalContour: return "bidirectional_contour";
+    case Strategy::ContourBidirectional: return "contour_bidirectional";
   }
   return "none";
 }

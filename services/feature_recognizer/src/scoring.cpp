@@ -42,12 +42,27 @@ TruthOperation read_operation(const nlohmann::json& j, const std::string& file, 
   std::string words;
   for (char c : strategy) words += c == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   std::size_t longest = 0;
-  for (int i = 0; i <= static_cast<int>(Strategy::Plunge); ++i) {
+  std::optional<Strategy> named;
+  for (int i = 0; i <= static_cast<int>(kLastStrategy); ++i) {
     const auto name = to_string(static_cast<Strategy>(i));
-    if (words.rfind(name, 0) == 0 && name.size() > longest) longest = name.size(), op.strategy = static_cast<Strategy>(i);
+    if (words.rfind(name, 0) == 0 && name.size() > longest) longest = name.size(), named = static_cast<Strategy>(i);
   }
+  if (named) op.strategies = {*named};
   op.tool_number = j.value("tool_number", 0);
+  op.source = type + " " + strategy;
   return op;
+}
+
+bool starts_with(const std::string& text, std::string_view prefix) { return text.rfind(prefix, 0) == 0; }
+
+OperationType milling_type(FeatureType feature, bool finishing) {
+  switch (feature) {
+    case FeatureType::PlanarFace: return finishing ? OperationType::PlaneFinishMilling : OperationType::PlaneRoughMilling;
+    case FeatureType::GeneralOutsideProfile:
+      return finishing ? OperationType::SideFinishMilling : OperationType::SideRoughMilling;
+    case FeatureType::Region: return OperationType::FreeformOperation;
+    default: return finishing ? OperationType::BottomAndSideFinishMilling : OperationType::BottomAndSideRoughMilling;
+  }
 }
 
 double number(const nlohmann::json& j, const char* key, const std::string& file, const std::string& id) {
@@ -73,8 +88,35 @@ TruthFeature read_feature(const nlohmann::json& j, const std::string& file) {
   if (j.contains("dimensions") && j["dimensions"].contains("diameter") && t.type == FeatureType::RoundHole) {
     t.diameter = j["dimensions"]["diameter"].get<double>();
   }
+  if (j.contains("dimensions") && j["dimensions"].is_object() &&
+      (t.type == FeatureType::ClosedPocket || t.type == FeatureType::GeneralOutsideProfile)) {
+    const auto& d = j["dimensions"];
+    auto read = [&](const char* key, std::optional<double>& into) {
+      if (d.contains(key) && d[key].is_number()) into = d[key].get<double>();
+    };
+    read("length", t.length);
+    read("width", t.width);
+    read("corner_radius", t.corner_radius);
+    read("corner_chamfer", t.corner_chamfer);
+    // The CAM parts state an outside profile's sides along x and y.
+    std::optional<double> along_x, along_y;
+    read("length_x", along_x);
+    read("width_y", along_y);
+    if (along_x && along_y) t.length = std::max(*along_x, *along_y), t.width = std::min(*along_x, *along_y);
+    if (t.corner_chamfer && *t.corner_chamfer <= 0) t.corner_chamfer.reset();  // none
+    if (t.corner_chamfer) t.corner_radius.reset();
+    read("diameter", t.profile_diameter);
+  }
   if (j.contains("operations") && j["operations"].is_array()) {
     for (const auto& o : j["operations"]) t.operations.push_back(read_operation(o, file, t.id));
+  } else if (j.contains("machined_by") && j["machined_by"].is_array()) {
+    std::vector<std::pair<std::string, std::string>> ops;
+    std::vector<int> tools;
+    for (const auto& o : j["machined_by"]) {
+      ops.emplace_back(o.value("op_type", std::string{}), o.value("strategy", std::string{}));
+      tools.push_back(o.value("tool_number", 0));
+    }
+    t.operations = freecad_operations(ops, tools, t.type, file, t.id);
   }
   switch (t.type) {
     case FeatureType::RoundHole:
@@ -93,6 +135,62 @@ TruthFeature read_feature(const nlohmann::json& j, const std::string& file) {
 }
 
 }  // namespace
+
+std::vector<TruthOperation> freecad_operations(const std::vector<std::pair<std::string, std::string>>& op_type_and_strategy,
+                                               const std::vector<int>& tool_numbers, FeatureType type,
+                                               const std::string& file, const std::string& id) {
+  std::vector<TruthOperation> out;
+  const std::size_t count = op_type_and_strategy.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto& [op_type, text] = op_type_and_strategy[k];
+    TruthOperation op;
+    op.tool_number = k < tool_numbers.size() ? tool_numbers[k] : 0;
+    op.source = op_type + " " + text;
+    // A FreeCAD operation states no roughing or finishing: one operation alone finishes a face
+    // or an outside profile (it makes the final surface) and roughs anything else; of several on
+    // one feature the last finishes. The same rule the recogniser names its operations by.
+    const bool finishing = k + 1 == count && (count > 1 || type == FeatureType::PlanarFace ||
+                                              type == FeatureType::GeneralOutsideProfile);
+    if (op_type == "ObjectDrilling") {
+      op.type = text.find("G83") != std::string::npos || text.find("G73") != std::string::npos
+                    ? OperationType::MultistepDrilling
+                    : text.find("G85") != std::string::npos ? OperationType::Reaming : OperationType::Drilling;
+      op.strategies = {Strategy::Plunge};
+    } else if (op_type == "ObjectHelix") {
+      op.type = milling_type(type, finishing);
+      op.strategies = {Strategy::Helical};
+    } else if (op_type == "ObjectProfile") {
+      op.type = milling_type(type, finishing);
+      op.strategies = {Strategy::Contour};
+    } else if (op_type == "ObjectSlot") {
+      op.type = milling_type(type, finishing);
+      op.strategies = {Strategy::CenterMilling};
+    } else if (op_type == "PathAdaptive") {
+      op.type = milling_type(type, finishing);
+      op.strategies = {Strategy::Adaptive};
+    } else if (op_type == "ObjectFace" || op_type == "ObjectPocket") {
+      op.type = milling_type(type, finishing);
+      // The clearing pattern, the first word of the text.
+      if (starts_with(text, "ZigZagOffset")) {
+        op.strategies = {Strategy::BidirectionalContour, Strategy::ContourBidirectional};
+      } else if (starts_with(text, "ZigZag")) {
+        op.strategies = {Strategy::Bidirectional};
+      } else if (starts_with(text, "Offset")) {
+        op.strategies = {Strategy::ContourParallel};
+      } else if (starts_with(text, "Line")) {
+        op.strategies = {Strategy::Unidirectional};
+      } else if (starts_with(text, "Spiral")) {
+        op.strategies = {Strategy::ContourSpiral};
+      } else {
+        throw InputError({file, 0, 0}, "feature '" + id + "': FreeCAD pattern '" + text + "' has no ISO 14649 strategy here");
+      }
+    } else {
+      throw InputError({file, 0, 0}, "feature '" + id + "': FreeCAD operation '" + op_type + "' is not mapped to ISO 14649");
+    }
+    out.push_back(std::move(op));
+  }
+  return out;
+}
 
 std::vector<TruthFeature> read_truth(const std::filesystem::path& file, const std::string& program) {
   std::ifstream in(file);
@@ -187,7 +285,8 @@ TypeScore score_operations(const std::vector<RecognizedFeature>& recognized, con
     for (const auto& want : t) {
       for (std::size_t k = next; k < r.size(); ++k) {
         if (r[k].type == want.type && r[k].tool_number == want.tool_number &&
-            (!want.strategy || r[k].strategy == *want.strategy)) {
+            (want.strategies.empty() ||
+             std::find(want.strategies.begin(), want.strategies.end(), r[k].strategy) != want.strategies.end())) {
           ++out.matched;
           next = k + 1;
           break;

@@ -362,6 +362,8 @@ std::optional<sn::Two5DMillingStrategy> strategy_of(const RecognizedOperation& o
     case Strategy::Contour:
     case Strategy::ContourParallel: return sn::ContourParallel{d.rotation, cutmode()};
     case Strategy::ContourSpiral: return sn::ContourSpiral{d.rotation, cutmode()};
+    case Strategy::BidirectionalContour: return sn::BidirectionalContour{feed(), d.stepover_direction, d.rotation, cutmode(), overlap()};
+    case Strategy::ContourBidirectional: return sn::ContourBidirectional{feed(), d.stepover_direction, d.rotation, cutmode(), overlap()};
     default: return std::nullopt;  // adaptive, helical, plunge: the explicit toolpath says it
   }
 }

@@ -553,6 +553,14 @@ class Cc1Reader {
     if (e == "CONTOUR_PARALLEL") return sn::ContourParallel{rot(2), cutmode(3), overlap, passes};
     if (e == "CONTOUR_SPIRAL") return sn::ContourSpiral{rot(2), cutmode(3), overlap, passes};
     if (e == "CENTER_MILLING") return sn::CenterMilling{overlap, passes};
+    if (e == "BIDIRECTIONAL_CONTOUR" || e == "CONTOUR_BIDIRECTIONAL") {
+      std::optional<sn::LeftOrRight> side;
+      if (i.attributes().size() > 3 && attr(i, 3).is_enumeration()) {
+        side = attr(i, 3).as_enumeration() == "LEFT" ? sn::LeftOrRight::Left : sn::LeftOrRight::Right;
+      }
+      if (e == "BIDIRECTIONAL_CONTOUR") return sn::BidirectionalContour{dir(2), side, rot(4), cutmode(5), overlap, passes};
+      return sn::ContourBidirectional{dir(2), side, rot(4), cutmode(5), overlap, passes};
+    }
     warn(i, "milling strategy " + e + " is not kept");
     return std::nullopt;
   }

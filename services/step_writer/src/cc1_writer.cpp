@@ -538,6 +538,18 @@ class Cc1Writer {
       r ? s_.enumeration(*r == sn::RotDirection::Cw ? "CW" : "CCW") : s_.unset();
     };
     auto feed_direction = [&](const std::optional<sn::Direction>& d) { return d ? direction(*d) : InstanceId{0}; };
+    // BIDIRECTIONAL_CONTOUR and CONTOUR_BIDIRECTIONAL: overlap, allow_multiple_passes,
+    // feed_direction, stepover_direction, rotation_direction, spiral_cutmode.
+    auto combined = [&](const char* entity, const auto& b, InstanceId dir) {
+      s_.begin(entity);
+      s_.opt_real(b.overlap);
+      s_.opt_boolean(b.allow_multiple_passes);
+      s_.opt_ref(dir);
+      b.stepover_direction ? s_.enumeration(*b.stepover_direction == sn::LeftOrRight::Left ? "LEFT" : "RIGHT") : s_.unset();
+      rotation(b.rotation_direction);
+      cutmode(b.spiral_cutmode);
+      return s_.end();
+    };
     return std::visit(Overload{
         [&](const sn::Unidirectional& u) {
           const InstanceId dir = feed_direction(u.feed_direction);
@@ -583,7 +595,9 @@ class Cc1Writer {
           s_.opt_real(m.overlap);
           s_.opt_boolean(m.allow_multiple_passes);
           return s_.end();
-        }},
+        },
+        [&](const sn::BidirectionalContour& b) { return combined("BIDIRECTIONAL_CONTOUR", b, feed_direction(b.feed_direction)); },
+        [&](const sn::ContourBidirectional& b) { return combined("CONTOUR_BIDIRECTIONAL", b, feed_direction(b.feed_direction)); }},
         *op.its_machining_strategy);
   }
   void two5d_attributes(const sn::Two5DMillingOperation& op, InstanceId strategy, bool plane, bool side) {

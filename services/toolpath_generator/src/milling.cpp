@@ -200,6 +200,9 @@ MillingOutput mill(PartModel& part, const MillingInput& in, const Options& o, st
           if (s.cutmode) sense.climb = *s.cutmode == sn::CutmodeType::Climb;
         } else if constexpr (std::is_same_v<S, sn::Unidirectional>) {
           if (s.cutmode) sense.climb = *s.cutmode == sn::CutmodeType::Climb;
+        } else if constexpr (std::is_same_v<S, sn::BidirectionalContour> || std::is_same_v<S, sn::ContourBidirectional>) {
+          if (s.rotation_direction) sense.counter_clockwise = *s.rotation_direction == sn::RotDirection::Ccw;
+          if (s.spiral_cutmode) sense.climb = *s.spiral_cutmode == sn::CutmodeType::Climb;
         }
       },
       strategy);
@@ -299,6 +302,22 @@ MillingOutput mill(PartModel& part, const MillingInput& in, const Options& o, st
       else if (const auto* face = std::get_if<sn::PlanarFace>(in.cc2_feature)) angle = direction_angle(f.region.frame, face->course_of_travel.its_direction);
       const bool left_side = bi->stepover_direction.value_or(sn::LeftOrRight::Left) == sn::LeftOrRight::Left;
       cuts = parallel_cuts(area, left, angle, stepover, left_side, true, sense);
+    } else if (std::holds_alternative<sn::BidirectionalContour>(strategy) ||
+               std::holds_alternative<sn::ContourBidirectional>(strategy)) {
+      // Passes back and forth and the contour along the boundary: after them
+      // (BIDIRECTIONAL_CONTOUR, as parallel_cuts ends), or before them (CONTOUR_BIDIRECTIONAL).
+      const bool contour_first = std::holds_alternative<sn::ContourBidirectional>(strategy);
+      const auto feed = contour_first ? std::get<sn::ContourBidirectional>(strategy).feed_direction
+                                      : std::get<sn::BidirectionalContour>(strategy).feed_direction;
+      const auto side = contour_first ? std::get<sn::ContourBidirectional>(strategy).stepover_direction
+                                      : std::get<sn::BidirectionalContour>(strategy).stepover_direction;
+      double angle = f.region.frame.angle;
+      if (feed) angle = direction_angle(f.region.frame, *feed);
+      cuts = parallel_cuts(area, left, angle, stepover, side.value_or(sn::LeftOrRight::Left) == sn::LeftOrRight::Left, true, sense);
+      if (contour_first) {
+        const auto loops = std::find_if(cuts.rbegin(), cuts.rend(), [](const Cut& c) { return !c.path.closed; }).base();
+        std::rotate(cuts.begin(), loops, cuts.end());
+      }
     } else if (const auto* uni = std::get_if<sn::Unidirectional>(&strategy)) {
       double angle = f.region.frame.angle;
       if (uni->feed_direction) angle = direction_angle(f.region.frame, *uni->feed_direction);

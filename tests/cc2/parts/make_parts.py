@@ -719,6 +719,387 @@ def variations():
                p, tools, stock((-3, -3, -30), (123, 93, 0), (0, 0, -30), (120, 90, 0), "part_top_corner"), features)
 
 
+# ---------------------------------------------------------------- (h) Fusion 360 / HSM style
+
+def trochoid_lane(prog, a, b, y, loop_r, advance, z, entry_top, f, plunge):
+    """Adaptive (trochoidal) clearing along one lane as HSM posts it: a helical ramp into the
+    material at the lane's start (turns of 1 mm down to the level), then loops, each two
+    half-circles advancing by `advance`, and a lift at the end (no full retract)."""
+    prog.go_to(a + loop_r, y, entry_top)
+    zz = entry_top + 0.5
+    prog.feed(a + loop_r, y, zz, plunge)
+    while zz - 1.0 > z + 1e-9:
+        zz -= 1.0
+        prog.arc(True, a + loop_r, y, zz, a, y, plunge)
+    prog.arc(True, a + loop_r, y, z, a, y, plunge)
+    prog.feed(a, y - loop_r, z, f)
+    x = a
+    while x + advance <= b + 1e-9:
+        prog.arc(True, x + advance / 2, y + loop_r, z, x + advance / 4, y, f)
+        prog.arc(True, x + advance, y - loop_r, z, x + 3 * advance / 4, y, f)
+        x += advance
+    prog.arc(True, x, y + loop_r, z, x, y, f)
+    prog.arc(True, x, y - loop_r, z, x, y, f)
+    prog.rapid(z=z + 1)
+
+
+def faced_with_arc_links(prog, x0, x1, ys, z, f, plunge):
+    """Facing in passes along X joined by half-circles outside the stock (HSM's facing)."""
+    prog.go_to(x0, ys[0], z)
+    prog.feed(x0, ys[0], z, plunge)
+    here, there = x0, x1
+    for k, y in enumerate(ys):
+        prog.feed(there, y, z, f)
+        if k + 1 < len(ys):
+            ny = ys[k + 1]
+            prog.arc(there > here, there, ny, z, there, (y + ny) / 2, f)
+            here, there = there, here
+    prog.retract()
+
+
+def hsm_style():
+    tools = [tool(1, "FaceMill_D40", "face_mill", 40, 3000, 1200, 400),
+             tool(2, "EndMill_D10", "flat_end_mill", 10, 9000, 1800, 400),
+             tool(3, "EndMill_D4", "flat_end_mill", 4, 14000, 500, 150),
+             tool(4, "SpotDrill_D10", "spot_drill", 10, 3000, 150, 150, tip_angle=90),
+             tool(5, "Drill_D6.8", "twist_drill", 6.8, 2200, 180, 180, tip_angle=118)]
+    p = Program(safe=15, clearance=2)
+    # face 1 mm: three passes along X, half-circle links beyond the stock
+    p.tool(1, 3000)
+    faced_with_arc_links(p, -25, 125, [8, 33, 58], 0.0, 1200, 400)
+    # 50 x 30 R6 pocket at (30, 35), 8 deep: adaptive lanes along X with the D10 (0.3 left),
+    # each lane ramped in by a helix; then rest-machined and finished with the D4 (contour)
+    p.tool(2, 9000)
+    c, hl, hw = (30.0, 35.0), 25.0, 15.0
+    loop_r, advance = 2.5, 1.5
+    reach = 5 + 0.3 + loop_r
+    lanes = [c[1] - hw + reach + k * (2 * (hw - reach)) / 3 for k in range(4)]
+    for z in (-4.0, -8.0):
+        for y in lanes:
+            trochoid_lane(p, c[0] - hl + reach, c[0] + hl - reach, y, loop_r, advance, z, z + 4.0, 1800, 400)
+        p.retract()
+    p.tool(3, 14000)
+    start, segs = rounded_rectangle(c, hl - 2, hw - 2, 4, 0, ccw=True)
+    contour_levels(p, start, segs, [-4.0, -8.0], 0, 500, 150)
+    # four through holes: spotted (G81, 1.5 deep), peck drilled through (G83)
+    holes = [(72, 15), (90, 15), (72, 55), (90, 55)]
+    p.tool(4, 3000)
+    p.cycle("G81", holes, -1.5, 2, 150)
+    p.tool(5, 2200)
+    p.cycle("G83", holes, -17.5, 2, 180, "Q3.000 ")
+    # outside profile 100 x 70 R5: roughed in three depths leaving 0.3, finished in two
+    p.tool(2, 9000)
+    start, segs = rounded_rectangle((50, 35), 50 + 5.3, 35 + 5.3, 5.3, 0, ccw=False)
+    contour_levels(p, start, segs, [-5.0, -10.0, -15.3], 0, 1800, 400)
+    start, segs = rounded_rectangle((50, 35), 50 + 5, 35 + 5, 5, 0, ccw=False)
+    contour_levels(p, start, segs, [-7.5, -15.3], 0, 1200, 400)
+    features = [
+        feature("F1", "planar_face", (50, 35), 1.0, 0.0, [op("plane_finish_milling", 1, "bidirectional")]),
+        feature("F2", "closed_pocket", c, 0.0, -8.0,
+                [op("bottom_and_side_rough_milling", 2, "adaptive"), op("bottom_and_side_finish_milling", 3, "contour")],
+                shape="rounded_rectangle", dimensions={"length": 50, "width": 30, "corner_radius": 6, "angle_deg": 0}),
+    ] + [
+        feature("F%d" % (3 + k), "round_hole", h, 0.0, -15.0,
+                [op("center_drilling", 4, "plunge"), op("multistep_drilling", 5, "plunge")],
+                dimensions={"diameter": 6.8}, bottom_condition="through")
+        for k, h in enumerate(holes)
+    ] + [
+        feature("F7", "general_outside_profile", (50, 35), 0.0, -15.0,
+                [op("side_rough_milling", 2, "contour"), op("side_finish_milling", 2, "contour")],
+                outline="rectangle 100 x 70"),
+    ]
+    write_part("p13_hsm_style", "100x70x15 part from a 104x74x16 blank, zero at the top front left corner, cut as "
+               "Fusion 360 / HSM posts it: facing with half-circle links, a 50x30 R6 pocket by adaptive "
+               "(trochoidal) lanes each ramped in by a helix, rest-machined and finished with a smaller tool, holes "
+               "spot drilled then peck drilled, the outside profile roughed then finished in depths",
+               p, tools, stock((-2, -2, -15), (102, 72, 1), (0, 0, -15), (100, 70, 0), "part_top_corner"), features)
+
+
+# ---------------------------------------------------------------- (i) a hand-written shop program
+
+SHOP_PROGRAM = """%
+(shop program, written at the machine: subprograms, loops, incremental moves, canned cycles)
+G17 G21 G40 G49 G80 G90 G94
+G54
+(face the saw-cut block, 0.5 mm, two passes)
+M6 T1
+G43 H1
+M3 S2000
+G0 X-35 Y20 Z10
+G1 Z0 F300
+G1 X155 F900
+G1 Y60
+G1 X-35
+G0 Z10
+(pocket 40 x 24 R4 at 35/40: zigzag per depth in a subprogram, 0.3 left on the walls)
+o100 sub
+  G0 X[#1] Y[#2]
+  G1 Z[#3 + 1] F200
+  G1 Z#3
+  G91
+  #10 = 0
+  o110 while [#10 LT 4]
+    G1 X[#4] F700
+    G1 Y[#5]
+    G1 X[-#4]
+    G1 Y[#5]
+    #10 = [#10 + 1]
+  o110 endwhile
+  G1 X[#4]
+  G90
+  G0 Z10
+o100 endsub
+M6 T2
+G43 H2
+M3 S6000
+G0 X19.3 Y32.3 Z10
+o120 repeat [1]
+  o100 call [19.3] [32.3] [-3] [31.4] [1.925]
+o120 endrepeat
+o100 call [19.3] [32.3] [-6] [31.4] [1.925]
+(finish the pocket walls with the 6 mm cutter, radius compensation on the drawn outline)
+M6 T3
+G43 H3
+M3 S8000
+G0 X35 Y40 Z10
+G1 Z-6 F150
+G41 D3 G1 X35 Y52 F500
+G1 X19
+G3 X15 Y48 I0 J-4
+G1 Y32
+G3 X19 Y28 I4 J0
+G1 X51
+G3 X55 Y32 I0 J4
+G1 Y48
+G3 X51 Y52 I-4 J0
+G1 X35
+G40 G1 X35 Y40
+G0 Z10
+(bolt circle: six holes on R20 about 90/40, spotted then drilled through, one subprogram)
+o200 sub
+  #10 = 0
+  o210 while [#10 LT 6]
+    #11 = [90 + 20 * COS[#10 * 60]]
+    #12 = [40 + 20 * SIN[#10 * 60]]
+    o220 if [#1 EQ 1]
+      G98 G82 X#11 Y#12 Z-2 R2 P0.2 F100
+    o220 else
+      G98 G81 X#11 Y#12 Z-23 R2 F150
+    o220 endif
+    #10 = [#10 + 1]
+  o210 endwhile
+  G80
+o200 endsub
+M6 T4
+G43 H4
+M3 S2500
+G0 Z10
+o200 call [1]
+M6 T5
+G43 H5
+M3 S1800
+G0 Z10
+o200 call [2]
+(keyway slot 10 wide along X at Y68, 4 deep: plunged back and forth, incremental)
+M6 T6
+G43 H6
+M3 S5000
+G0 X15 Y68 Z10
+G1 Z0.5 F200
+G1 Z-2
+G91 G1 X40 F400
+G90 G1 Z-4 F200
+G91 G1 X-40 F400
+G90 G0 Z10
+M5
+G0 Z50
+M30
+%
+"""
+
+
+def shop_program():
+    tools = [tool(1, "FaceMill_D63", "face_mill", 63, 2000, 900, 300),
+             tool(2, "EndMill_D8", "flat_end_mill", 8, 6000, 700, 200),
+             tool(3, "EndMill_D6", "flat_end_mill", 6, 8000, 500, 150),
+             tool(4, "SpotDrill_D12", "spot_drill", 12, 2500, 100, 100, tip_angle=90),
+             tool(5, "Drill_D8.5", "twist_drill", 8.5, 1800, 150, 150, tip_angle=118),
+             tool(6, "EndMill_D10", "flat_end_mill", 10, 5000, 400, 200)]
+
+    class Text:
+        def text(self):
+            return SHOP_PROGRAM
+
+    holes = [(round(90 + 20 * math.cos(math.radians(60 * k)), 4), round(40 + 20 * math.sin(math.radians(60 * k)), 4))
+             for k in range(6)]
+    features = [
+        feature("F1", "planar_face", (60, 40), 0.5, 0.0, [op("plane_finish_milling", 1, "bidirectional")]),
+        feature("F2", "closed_pocket", (35, 40), 0.0, -6.0,
+                [op("bottom_and_side_rough_milling", 2, "bidirectional"), op("bottom_and_side_finish_milling", 3, "contour")],
+                shape="rounded_rectangle", dimensions={"length": 40, "width": 24, "corner_radius": 4, "angle_deg": 0}),
+    ] + [
+        feature("F%d" % (3 + k), "round_hole", h, 0.0, -20.0,
+                [op("center_drilling", 4, "plunge"), op("drilling", 5, "plunge")],
+                dimensions={"diameter": 8.5}, bottom_condition="through")
+        for k, h in enumerate(holes)
+    ] + [
+        feature("F9", "slot", (35, 68), 0.0, -4.0, [op("bottom_and_side_rough_milling", 6, "center_milling")],
+                shape="closed_slot_round_ends", end_conditions=["closed_radiused", "closed_radiused"],
+                dimensions={"width": 10, "length_overall": 50}),
+    ]
+    write_part("p14_shop_program", "120x80x20 saw-cut block faced 0.5, zero at the top front left corner, written by "
+               "hand as at the machine: a zigzag subprogram called per depth (incremental moves, a while loop, a "
+               "repeat), the pocket walls finished with cutter radius compensation (G41) on the drawn outline, a "
+               "bolt circle of six holes computed in a loop and spotted (G82) then drilled (G81) by one subprogram "
+               "called twice, a keyway plunged back and forth in incremental moves",
+               Text(), tools, stock((0, 0, -20), (120, 80, 0.5), (0, 0, -20), (120, 80, 0), "part_top_corner"), features)
+
+
+# ---------------------------------------------------------------- (j) hobby CAM style (Estlcam, Carbide Create)
+
+def chamfered_rectangle(c, half_l, half_w, leg):
+    """The eight corners (CCW) of a rectangle whose corners are cut at 45 degrees, legs `leg`."""
+    x0, x1, y0, y1 = c[0] - half_l, c[0] + half_l, c[1] - half_w, c[1] + half_w
+    return [(x1 - leg, y0), (x1, y0 + leg), (x1, y1 - leg), (x1 - leg, y1), (x0 + leg, y1), (x0, y1 - leg),
+            (x0, y0 + leg), (x0 + leg, y0)]
+
+
+def offset_convex(poly, d):
+    """A convex CCW polygon's edges moved by d (inward when d > 0), neighbours intersected: the
+    tool centre's path along the inside of the polygon (sharp corners; the tool rounds them)."""
+    lines = []
+    for k in range(len(poly)):
+        (ax, ay), (bx, by) = poly[k], poly[(k + 1) % len(poly)]
+        L = math.hypot(bx - ax, by - ay)
+        nx, ny = -(by - ay) / L, (bx - ax) / L  # left normal: inside of a CCW polygon
+        lines.append(((ax + nx * d, ay + ny * d), (bx - ax, by - ay)))
+    out = []
+    for k in range(len(lines)):
+        (p, r), (q, s) = lines[k - 1], lines[k]
+        den = r[0] * s[1] - r[1] * s[0]
+        t = ((q[0] - p[0]) * s[1] - (q[1] - p[1]) * s[0]) / den
+        out.append((p[0] + t * r[0], p[1] + t * r[1]))
+    # an edge that the offset turned round has vanished: its half-plane no longer bounds the ring
+    keep = []
+    for k in range(len(poly)):
+        a, b = out[k], out[(k + 1) % len(out)]
+        if (b[0] - a[0]) * lines[k][1][0] + (b[1] - a[1]) * lines[k][1][1] > 1e-9:
+            keep.append(poly[k:k + 2] if k + 1 < len(poly) else [poly[k], poly[0]])
+    if len(keep) == len(poly):
+        return out
+    short = [e for e in keep]
+    pts = []
+    for k in range(len(short)):
+        pts.append(short[k][0])
+    # the polygon of the remaining edges' lines (the vanished edges' corners extended)
+    return offset_convex(extend_edges(short), d)
+
+
+def extend_edges(edges):
+    """The convex polygon bounded by the lines of `edges` (each a pair of points, CCW order)."""
+    out = []
+    for k in range(len(edges)):
+        (a0, a1), (b0, b1) = edges[k - 1], edges[k]
+        r = (a1[0] - a0[0], a1[1] - a0[1])
+        s_ = (b1[0] - b0[0], b1[1] - b0[1])
+        den = r[0] * s_[1] - r[1] * s_[0]
+        t = ((b0[0] - a0[0]) * s_[1] - (b0[1] - a0[1]) * s_[0]) / den
+        out.append((a0[0] + t * r[0], a0[1] + t * r[1]))
+    return out
+
+
+def outside_path(poly, d):
+    """The tool centre's path around the outside of a convex CCW polygon at distance d, as a
+    hobby CAM posts it: straight offsets joined by arcs about the corners (clockwise, climb)."""
+    n = len(poly)
+    segs = []
+    for k in range(n):
+        (ax, ay), (bx, by) = poly[k], poly[(k + 1) % n]
+        L = math.hypot(bx - ax, by - ay)
+        nx, ny = (by - ay) / L, -(bx - ax) / L  # right normal: outside of a CCW polygon
+        segs.append(((ax + nx * d, ay + ny * d), (bx + nx * d, by + ny * d), poly[(k + 1) % n]))
+    # run them backwards (clockwise): each edge reversed, then an arc about the corner before it
+    return segs
+
+
+def hobby_style():
+    tools = [tool(1, "EndMill_D6", "flat_end_mill", 6, 18000, 1200, 300),
+             tool(2, "EndMill_D3", "flat_end_mill", 3, 20000, 800, 200)]
+    p = Program(safe=5, clearance=1)
+    p.tool(1, 18000)
+    # pocket 40 x 24 with 5 mm 45-degree corner chamfers at (35, 30), 6 deep: offset rings of the
+    # octagon from the outside in, a ramp along the first side at each level, 2 mm per level
+    c = (35.0, 30.0)
+    poly = chamfered_rectangle(c, 20, 12, 5)
+    rings = []
+    d = 3.0
+    while 12 - d > 0.5:
+        rings.append(offset_convex(poly, d))
+        d += 2.5
+    prev = 0.0
+    for z in (-2.0, -4.0, -6.0):
+        a = rings[0][0]
+        b = rings[0][1]
+        p.go_to(a[0], a[1], prev)
+        p.feed(a[0], a[1], prev, 300)
+        p.feed(b[0], b[1], z, 300)   # ramp along the first side
+        p.feed(a[0], a[1], z, 1200)  # back at the level
+        for ring in rings:
+            p.feed(ring[0][0], ring[0][1], z, 1200)
+            for q in ring[1:] + [ring[0]]:
+                p.feed(q[0], q[1], z, 1200)
+        p.retract()
+        prev = z
+    # holes D3 drilled by the end mill in G1 pecks (no canned cycle): 2 mm each, up 1 mm between
+    p.tool(2, 20000)
+    holes = [(70, 10), (70, 50), (85, 30)]
+    for (hx, hy) in holes:
+        p.go_to(hx, hy, 0.0)
+        last = 0.0
+        for depth in (-2.0, -4.0, -6.0, -8.5):
+            if last < 0:
+                p.rapid(z=last + 0.5)  # back down to 0.5 above the last peck's depth
+            p.feed(hx, hy, depth, 200)
+            p.rapid(z=1.0)
+            last = depth
+        p.retract()
+    # outside profile 100 x 60 with 6 mm 45-degree corner chamfers, 8 deep (the plate's bottom)
+    # in four levels: the octagon at a tool radius, arcs about its corners, clockwise
+    p.tool(1, 18000)
+    outline = chamfered_rectangle((50, 30), 50, 30, 6)
+    segs = outside_path(outline, 3.0)
+    start = segs[-1][1]
+    prev = 0.0
+    for z in (-2.0, -4.0, -6.0, -8.3):
+        p.go_to(start[0], start[1], prev)
+        p.feed(start[0], start[1], z, 300)
+        for k in range(len(segs) - 1, -1, -1):
+            a, b, corner = segs[k]
+            p.feed(a[0], a[1], z, 1200)  # along edge k backwards, to its start
+            prev_edge = segs[k - 1]
+            p.arc(False, prev_edge[1][0], prev_edge[1][1], z, outline[k][0], outline[k][1], 1200)
+        p.retract()
+        prev = z
+    features = [
+        feature("F1", "closed_pocket", c, 0.0, -6.0, [op("bottom_and_side_rough_milling", 1, "contour_parallel")],
+                shape="rectangle_chamfered_corners", dimensions={"length": 40, "width": 24, "corner_chamfer": 5, "angle_deg": 0}),
+    ] + [
+        feature("F%d" % (2 + k), "round_hole", h, 0.0, -8.0, [op("multistep_drilling", 2, "plunge")],
+                dimensions={"diameter": 3}, bottom_condition="through")
+        for k, h in enumerate(holes)
+    ] + [
+        feature("F5", "general_outside_profile", (50, 30), 0.0, -8.0, [op("side_finish_milling", 1, "contour")],
+                outline="rectangle 100 x 60, corners chamfered 6 x 45 degrees",
+                dimensions={"length": 100, "width": 60, "corner_chamfer": 6}),
+    ]
+    write_part("p15_hobby_style", "100x60x8 plate from a 110x70x8 blank, zero at the top front left corner, cut as "
+               "hobby CAM (Estlcam, Carbide Create) posts it: two end mills and no canned cycles, a 40x24 pocket "
+               "with 5 mm 45-degree corner chamfers cleared by offset rings with a ramp along the first side, "
+               "through holes drilled by an end mill in G1 pecks, the outside profile with 6 mm corner chamfers "
+               "cut in step-downs with arcs about its corners",
+               p, tools, stock((-5, -5, -8), (105, 65, 0), (0, 0, -8), (100, 60, 0), "part_top_corner"), features)
+
+
 if __name__ == "__main__":
     nested_pockets()
     helix_holes()
@@ -727,3 +1108,6 @@ if __name__ == "__main__":
     plate()
     slots()
     variations()
+    hsm_style()
+    shop_program()
+    hobby_style()

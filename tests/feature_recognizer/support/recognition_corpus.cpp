@@ -25,7 +25,7 @@ std::vector<RecognitionCase> recognition_corpus(const std::filesystem::path& sou
   // Hand-designed parts of other shapes and strategies (tests/cc2/parts/make_parts.py).
   const auto parts = source_dir / "tests/cc2/parts";
   for (const char* part : {"p06_nested_pockets", "p07_helix_holes", "p08_multi_level", "p09_small_part", "p10_plate",
-                           "p11_slots_rotated_pocket", "p12_freecad_style"}) {
+                           "p11_slots_rotated_pocket", "p12_freecad_style", "p13_hsm_style", "p14_shop_program", "p15_hobby_style"}) {
     cases.push_back({part, data / (std::string(part) + ".canon"), parts / part / "tools.json", parts / part / "stock.json",
                      parts / part / "truth.json", ""});
   }

@@ -78,7 +78,22 @@ struct CenterMilling {
   std::optional<double> overlap; std::optional<bool> allow_multiple_passes;
   friend bool operator==(const CenterMilling&, const CenterMilling&) = default;
 };
-using Two5DMillingStrategy = std::variant<Unidirectional, Bidirectional, ContourParallel, ContourSpiral, CenterMilling>;
+// Zigzag then one contour along the boundary (bidirectional_contour), or the contour first
+// (contour_bidirectional).
+struct BidirectionalContour {
+  std::optional<Direction> feed_direction; std::optional<LeftOrRight> stepover_direction;
+  std::optional<RotDirection> rotation_direction; std::optional<CutmodeType> spiral_cutmode;
+  std::optional<double> overlap; std::optional<bool> allow_multiple_passes;
+  friend bool operator==(const BidirectionalContour&, const BidirectionalContour&) = default;
+};
+struct ContourBidirectional {
+  std::optional<Direction> feed_direction; std::optional<LeftOrRight> stepover_direction;
+  std::optional<RotDirection> rotation_direction; std::optional<CutmodeType> spiral_cutmode;
+  std::optional<double> overlap; std::optional<bool> allow_multiple_passes;
+  friend bool operator==(const ContourBidirectional&, const ContourBidirectional&) = default;
+};
+using Two5DMillingStrategy = std::variant<Unidirectional, Bidirectional, ContourParallel, ContourSpiral, CenterMilling,
+                                          BidirectionalContour, ContourBidirectional>;
 
 struct Two5DMillingOperation : MachiningOperation {
   std::optional<Two5DMillingStrategy> its_machining_strategy;

@@ -36,6 +36,8 @@ struct Profile {
   double length = 0;        // along the placement's x direction (the longer side)
   double width = 0;
   double corner_radius = 0;
+  // Corners cut at 45° (GeneralClosed, the outline exact): the chamfer's leg along each side.
+  double corner_chamfer = 0;
   double angle_deg = 0;     // rotation of `length` from the program's +X, in [0, 180)
   double diameter = 0;      // Circular
   std::vector<Point2> outline;  // GeneralClosed (and every closed region): the boundary, CCW
@@ -54,10 +56,13 @@ enum class OperationType : std::uint8_t {
 };
 
 // ISO 14649-11 two5D_milling_strategy subtypes, plus the tool-path patterns CAM adds.
+// BidirectionalContour: zigzag, then one contour along the boundary; ContourBidirectional: the
+// contour first.
 enum class Strategy : std::uint8_t {
   None, Unidirectional, Bidirectional, CenterMilling, Contour, ContourParallel,
-  ContourSpiral, Adaptive, Helical, Plunge
+  ContourSpiral, Adaptive, Helical, Plunge, BidirectionalContour, ContourBidirectional
 };
+inline constexpr Strategy kLastStrategy = Strategy::ContourBidirectional;
 
 struct RecognizedOperation {
   OperationType type = OperationType::BottomAndSideRoughMilling;
