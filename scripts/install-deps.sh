@@ -16,6 +16,7 @@ packages=(
   libssl-dev  # SHA-256 of written files (services), openssl for the DDS Security test PKI
   # Open CASCADE: STEP B-rep part files (part_reader only)
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
+  libtbb-dev  # the OCCT CMake targets link libtbb.so, which only the -dev package provides
 )
 if [[ "${1:-}" == "--tests" ]]; then
   # clang + its runtime for libFuzzer targets and sanitizer builds; iproute2 for multi-host tests.

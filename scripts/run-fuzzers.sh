@@ -15,6 +15,10 @@ for t in "${targets[@]}"; do
   seeds="tests/fuzz/corpus/${name#fuzz_}"
   work=$(mktemp -d)
   [[ -d "$seeds" ]] && cp -r "$seeds"/. "$work"/
+  if [[ "$name" == fuzz_ap224 ]]; then  # Part 21 seeds, broken Part 21 files, our AP224 parts and RAMP's
+    cp tests/fuzz/corpus/part21/* tests/part_reader/data/*.stp "$work"/
+    for f in ../shared/corpus/part21-negative/*.stp ../shared/corpus/ap224/*.stp; do [[ -f "$f" ]] && cp "$f" "$work"/; done
+  fi
   for program in "tests/interpreter/dialects/${name#fuzz_}"/*; do
     [[ -f "$program" && "$program" != *.ngc ]] && cp "$program" "$work"/
   done

@@ -31,6 +31,7 @@ struct CanonArguments {
   std::string dialect = "rs274ngc";
   std::string heidenhain_feed_units = "mm/min";
   bool strict = false;
+  std::vector<int> machine_functions;
 };
 
 std::vector<std::filesystem::path> split_path(const std::string& text) {
@@ -58,12 +59,15 @@ int run_canon(const CanonArguments& args, const Feedback& feedback) {
   options.subroutine_path = split_path(args.subroutine_path);
   interpreter::parse_dialect_name(args.dialect, options.dialect);
   if (options.dialect == interpreter::Dialect::Auto) {
-    const auto detected = program.text ? interpreter::detect_dialect(*program.text) : interpreter::detect_dialect_file(program.path);
+    // the dialect whose reading takes the whole program (errors are located InputErrors)
+    const auto detected = program.text ? interpreter::detect_dialect_reading(*program.text, program.name, options)
+                                       : interpreter::detect_dialect_reading(program.path, options);
     options.dialect = detected.dialect;
     feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " + detected.reason + ")");
   }
   if (args.heidenhain_feed_units == "mm/s") options.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
   options.strict = args.strict;
+  options.machine_functions = args.machine_functions;
   options.warning = [](const SourceLocation& where, const std::string& message) {
     std::fflush(stdout);
     print_warning(where, message);
@@ -105,6 +109,10 @@ void add_canon_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"mm/min", "mm/s"}));
   cmd->add_flag("--strict", args->strict,
                 "Refuse what is otherwise read with a warning (machine builder M codes, G43 without tool lengths)");
+  cmd->add_option("--machine-functions", args->machine_functions,
+                  "M codes that are the machine builder's machine functions (no motion), beyond the dialect's list: "
+                  "read with a warning")
+      ->delimiter(',');
   cmd->callback([args, cmd, &exit_code]() { exit_code = run_canon(*args, Feedback(verbosity_of(*cmd))); });
 }
 

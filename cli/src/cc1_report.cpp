@@ -83,7 +83,9 @@ void Cc1Report::element(const stepnc::Project& project, const stepnc::Executable
   first_element_ = false;
   const auto* ws = std::get_if<stepnc::MachiningWorkingstep>(&element);
   append_key(text_, "kind");
-  append_string(text_, ws ? "MACHINING_WORKINGSTEP" : "RAPID_MOVEMENT");
+  append_string(text_, ws ? "MACHINING_WORKINGSTEP"
+                          : std::holds_alternative<stepnc::WorkpieceProbing>(element) ? "WORKPIECE_PROBING"
+                                                                                       : "RAPID_MOVEMENT");
   std::visit(
       [&](const auto& x) {
         text_ += ", ";

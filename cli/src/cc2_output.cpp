@@ -1,6 +1,7 @@
 #include "cc2_output.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/feature_recognizer/cc1_input.hpp"
@@ -50,20 +51,37 @@ nlohmann::ordered_json dimensions(const fr::RecognizedFeature& f) {
 
 }  // namespace
 
-Cc2Output build_cc2(const stepnc::Project& cc1, const std::optional<setup::Stock>& stock, const std::string& source) {
+Cc2Output build_cc2(const stepnc::Project& cc1, const std::optional<setup::Stock>& stock, const std::string& source,
+                    const std::function<void()>& checkpoint) {
   Cc2Output out;
   // The CC1 project's rawpiece first: a program converted directly and its CC1 file then give
   // the same stock, hence the same CC2 bytes.
   const auto rawpiece = fr::stock_from_cc1(cc1);
   if (rawpiece) out.stock = *rawpiece;
   else if (stock) out.stock = *stock;
-  else throw InputError({source, 0, 0}, "no stock: the file has no rawpiece block; give --stock");
-  out.features = fr::recognize(fr::workingsteps_from_cc1(cc1), out.stock);
+  else throw InputError({source, 1, 1}, "no stock: the file has no rawpiece block; give --stock");
+  try {
+    fr::Options options;
+    options.checkpoint = checkpoint;
+    out.features = fr::recognize(fr::workingsteps_from_cc1(cc1), out.stock, options);
+  } catch (const InputError& e) {
+    // The recogniser knows the program lines of its moves, not the file: name it here.
+    if (!e.where().file.empty()) throw;
+    throw InputError({source, e.where().line == 0 ? 1 : e.where().line, e.where().column == 0 ? 1 : e.where().column},
+                     e.message());
+  }
   auto cc2 = fr::cc2_from_cc1(cc1, out.features);
   out.project = std::move(cc2.project);
   out.feature_ids = std::move(cc2.feature_ids);
   out.workingstep_ids = std::move(cc2.workingstep_ids);
   out.warnings = std::move(cc2.warnings);
+  std::size_t approximate = 0;
+  for (const auto& f : out.features) approximate += f.approximate ? 1 : 0;
+  if (approximate > 0) {
+    out.warnings.push_back(std::to_string(approximate) + " of " + std::to_string(out.features.size()) +
+                           " features are approximate: the program's cuts overlap too densely to be analysed within "
+                           "the recognition work limit (docs/recognition.md, \"Bounded cost\")");
+  }
   return out;
 }
 
@@ -85,6 +103,7 @@ nlohmann::ordered_json cc2_features_json(const Cc2Output& out) {
     json sides = json::array();
     for (auto s : f.open_sides) sides.push_back(fr::to_string(s));
     j["open_sides"] = sides;
+    if (f.approximate) j["approximate"] = true;
     if (f.type == fr::FeatureType::Slot) {
       json ends = json::array();
       for (auto e : f.slot_ends) ends.push_back(e == fr::SlotEnd::Open ? "open" : e == fr::SlotEnd::Flat ? "flat" : "radiused");

@@ -2,6 +2,7 @@
 // `ncbridge convert --level cc2`: recognition on a CC1 project and what the command writes from
 // it (the CC2 project, the report's `features` array in the shape of docs/formats/report.md).
 #include <nlohmann/json.hpp>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,7 +24,9 @@ struct Cc2Output {
 
 // Recognises the features of `cc1` against its rawpiece block (or `stock` when the project has
 // none: a CC1 file without a rawpiece needs --stock). Throws InputError when neither exists.
-Cc2Output build_cc2(const stepnc::Project& cc1, const std::optional<setup::Stock>& stock, const std::string& source);
+// `checkpoint` (if set) is the recogniser's (feature_recognizer::Options): it may throw to stop.
+Cc2Output build_cc2(const stepnc::Project& cc1, const std::optional<setup::Stock>& stock, const std::string& source,
+                    const std::function<void()>& checkpoint = {});
 
 // The report's `features` array (docs/formats/report.md).
 nlohmann::ordered_json cc2_features_json(const Cc2Output& out);

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -58,6 +59,30 @@ struct ConvertArguments {
   std::string subroutine_path;
   std::optional<double> security_plane;
   bool strict = false;
+  std::vector<int> machine_functions;
+  double max_seconds = 0;  // 0: no limit
+};
+
+// Throws once the conversion has run longer than --max-seconds (an InputError: the program is
+// too costly to convert within the bound).
+class TimeLimit {
+ public:
+  TimeLimit(const ConvertArguments& args, Clock::time_point start) : program_(args.program), seconds_(args.max_seconds) {
+    if (seconds_ > 0) deadline_ = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds_));
+  }
+  void check() const {
+    if (!deadline_ || Clock::now() <= *deadline_) return;
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", seconds_);
+    throw InputError({program_, 1, 1}, std::string("the conversion ran longer than --max-seconds (") + text +
+                                           " s) and was stopped; nothing was written");
+  }
+  bool set() const { return deadline_.has_value(); }
+
+ private:
+  std::string program_;
+  double seconds_;
+  std::optional<Clock::time_point> deadline_;
 };
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
@@ -76,8 +101,8 @@ interpreter::Dialect dialect_of(const std::string& name) {
 // says, and feeding the progress line.
 class TimedSink final : public canonical::Sink {
  public:
-  TimedSink(cc1_builder::Cc1Builder& builder, ProgramFacts& facts, Progress& progress, bool timed)
-      : builder_(builder), facts_(facts), progress_(progress), timed_(timed) {}
+  TimedSink(cc1_builder::Cc1Builder& builder, ProgramFacts& facts, Progress& progress, bool timed, const TimeLimit& limit)
+      : builder_(builder), facts_(facts), progress_(progress), timed_(timed), limit_(limit) {}
   void source_file(std::uint32_t index, std::string_view path) override {
     facts_.source_file(index, path);
     builder_.source_file(index, path);
@@ -91,6 +116,7 @@ class TimedSink final : public canonical::Sink {
     } else {
       builder_.call(c);
     }
+    if ((++calls_ & 0xFFF) == 0) limit_.check();
     progress_.tick([&] {
       return "converting: line " + std::to_string(c.source.line) + ", " + std::to_string(builder_.calls_seen()) +
              " canonical calls";
@@ -108,6 +134,8 @@ class TimedSink final : public canonical::Sink {
   ProgramFacts& facts_;
   Progress& progress_;
   bool timed_;
+  const TimeLimit& limit_;
+  std::uint64_t calls_ = 0;
   Clock::duration spent_{};
 };
 
@@ -141,7 +169,9 @@ class ElementWriter final : public cc1_builder::WorkplanSink {
 };
 
 std::string_view kind_of(const stepnc::Executable& e) {
-  return std::holds_alternative<stepnc::RapidMovement>(e) ? "RAPID_MOVEMENT" : "MACHINING_WORKINGSTEP";
+  if (std::holds_alternative<stepnc::RapidMovement>(e)) return "RAPID_MOVEMENT";
+  if (std::holds_alternative<stepnc::WorkpieceProbing>(e)) return "WORKPIECE_PROBING";
+  return "MACHINING_WORKINGSTEP";
 }
 
 nlohmann::ordered_json report_of(const ConvertArguments& args, const std::string& program, const stepnc::Project& p,
@@ -244,6 +274,10 @@ interpreter::Options interpreter_options(const ConvertArguments& args, const Con
   const Input& program = run.program;
   interpreter::Options interp;
   interp.strict = args.strict;
+  // a program that ends without M2/M30 (or %, END PGM) runs to its last block on the control:
+  // converted, with a warning (refused under --strict)
+  interp.require_program_end = false;
+  interp.machine_functions = args.machine_functions;
   interp.warning = [&warnings](const SourceLocation& where, const std::string& message) {
     Warning w;
     w.kind = "reading";
@@ -252,17 +286,17 @@ interpreter::Options interpreter_options(const ConvertArguments& args, const Con
     warnings.push_back(std::move(w));
   };
   interp.dialect = dialect_of(args.dialect);
-  if (interp.dialect == interpreter::Dialect::Auto) {  // detect, and say which
-    const auto detected = program.text ? interpreter::detect_dialect(*program.text)
-                                       : interpreter::detect_dialect_file(program.path);
-    interp.dialect = detected.dialect;
-    run.feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " + detected.reason + ")");
-  }
   if (args.heidenhain_feed_units == "mm/s") interp.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
   interp.tools = tools;
   std::stringstream dirs(args.subroutine_path);
   for (std::string d; std::getline(dirs, d, ':');) {
     if (!d.empty()) interp.subroutine_path.emplace_back(d);
+  }
+  if (interp.dialect == interpreter::Dialect::Auto) {  // detect (the reading that takes the whole program), and say which
+    const auto detected = program.text ? interpreter::detect_dialect_reading(*program.text, program.name, interp)
+                                       : interpreter::detect_dialect_reading(program.path, interp);
+    interp.dialect = detected.dialect;
+    run.feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " + detected.reason + ")");
   }
   return interp;
 }
@@ -355,6 +389,7 @@ void refuse_warnings_if_strict(const ConvertArguments& args, const std::vector<W
 // CC1 from a program, streamed: interpreter -> cc1_builder -> (Part 21 writer, report) element
 // by element; the model is never whole in memory.
 int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_point t0) {
+  const TimeLimit limit(args, t0);
   const std::optional<setup::Stock> stock = setup::read_stock(args.stock);
   const cc1_builder::Options options = builder_options(args, stock);
   run.feedback.detail(setup_detail(options, args));
@@ -370,7 +405,7 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
   SetupChecks checks(check_inputs(args, run.program, stock, &options.tools), &facts);
   ElementWriter elements(writer, report ? &*report : nullptr, checks);
   cc1_builder::Cc1Builder builder(options, &elements);
-  TimedSink sink(builder, facts, *run.progress, report.has_value());
+  TimedSink sink(builder, facts, *run.progress, report.has_value(), limit);
   const auto t_interpret = Clock::now();
   interpret(run.program, interp, sink);
   const auto t_built = Clock::now();
@@ -428,6 +463,7 @@ ConvertRun open_run(const ConvertArguments& args, Verbosity verbosity) {
 int run_convert(const ConvertArguments& args, Verbosity verbosity) {
   const auto t0 = Clock::now();
   ConvertRun run = open_run(args, verbosity);
+  const TimeLimit limit(args, t0);
   const bool part21_input = is_part21_file(run.program);
   if (!part21_input && (args.tools.empty() || args.stock.empty())) {
     throw UsageError("converting a program needs --tools and --stock");
@@ -458,7 +494,7 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
     const interpreter::Options interp = interpreter_options(args, run, options.tools, read_warnings);
     cc1_builder::Cc1Builder builder(options);
     ProgramFacts facts;
-    TimedSink sink(builder, facts, *run.progress, !args.report.empty());
+    TimedSink sink(builder, facts, *run.progress, !args.report.empty(), limit);
     t_interpret = Clock::now();
     interpret(run.program, interp, sink);
     t_built = Clock::now();
@@ -476,7 +512,9 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
   std::optional<Cc2Output> cc2;
   if (args.level == "cc2") {
     run.progress->set("recognising features");
-    cc2 = build_cc2(project, stock, run.program.name);
+    std::function<void()> checkpoint;
+    if (limit.set()) checkpoint = [&limit] { limit.check(); };
+    cc2 = build_cc2(project, stock, run.program.name, checkpoint);
     run.feedback.detail("recognised " + count(cc2->features.size(), "feature", "features") + " in " +
                         seconds(ms(Clock::now() - t_built) / 1000));
   }
@@ -557,6 +595,13 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--strict", args->strict,
                 "A warning is an error: exit 1, nothing written (the interpreter refuses machine builder M codes, G43 "
                 "without tool lengths at their place)");
+  cmd->add_option("--machine-functions", args->machine_functions,
+                  "M codes that are the machine builder's machine functions (no motion), beyond the dialect's list: "
+                  "read with a warning")
+      ->delimiter(',');
+  cmd->add_option("--max-seconds", args->max_seconds,
+                  "Stop with an error (writing nothing) once the conversion has run this long (default: no limit)")
+      ->check(CLI::NonNegativeNumber);
   cmd->callback([args, cmd, &exit_code]() { exit_code = run_convert(*args, verbosity_of(*cmd)); });
 }
 

@@ -59,6 +59,11 @@ std::vector<sn::CartesianPoint> points_of(const sn::CompositeCurve& curve) {
       out.insert(out.end(), line->points.begin(), line->points.end());
       continue;
     }
+    if (const auto* spline = std::get_if<sn::BSplineCurve>(&segment)) {
+      const auto points = sn::bspline_polyline(*spline, 0.01);  // a drawing: a hundredth of a mm is plenty
+      out.insert(out.end(), points.begin(), points.end());
+      continue;
+    }
     const auto& arc = std::get<sn::TrimmedCircle>(segment);
     const auto& p = arc.position;
     const sn::Direction& r = p.ref_direction;
@@ -166,6 +171,13 @@ std::string html_report(const HtmlReportInput& in) {
     if (const auto* r = std::get_if<sn::RapidMovement>(&e)) {
       if (!r->its_toolpath) continue;
       for (const auto& t : r->its_toolpath->its_list) paths.push_back({points_of(t.basiccurve), true, legend.size()});
+      continue;
+    }
+    if (const auto* probing = std::get_if<sn::WorkpieceProbing>(&e)) {  // the probe's travel, as a rapid
+      const auto& s = probing->start_position.location;
+      const auto& d = probing->its_direction;
+      const double travel = probing->expected_value.theoretical_size + probing->expected_value.upper_limit;
+      paths.push_back({{s, {s.x + d.x * travel, s.y + d.y * travel, s.z + d.z * travel}}, true, legend.size()});
       continue;
     }
     const auto& ws = std::get<sn::MachiningWorkingstep>(e);

@@ -28,6 +28,9 @@ int main(int argc, char** argv) {
   add_check_command(app, exit_code);
   add_convert_command(app, exit_code);
   add_diff_command(app, exit_code);
+  add_gcode_command(app, exit_code);
+  add_plan_command(app, exit_code);
+  add_optimize_command(app, exit_code);
 #ifdef NCBRIDGE_HAVE_SERVICES
   add_up_command(app, exit_code);
   add_submit_command(app, exit_code);

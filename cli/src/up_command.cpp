@@ -41,8 +41,9 @@ struct UpArguments {
   std::string live_tools;
   std::string live_stock;
   std::string log_level = "info";
-  // Passed on to every service (service_options.cpp): how long finished jobs stay on the bus.
-  std::optional<std::string> retain_jobs, retain_for, retain_mb;
+  // Passed on to every service (service_options.cpp): how long finished jobs stay on the bus,
+  // and how long a job may run in a worker.
+  std::optional<std::string> retain_jobs, retain_for, retain_mb, max_job_seconds;
 };
 
 struct Child {
@@ -137,7 +138,8 @@ int run_up(const UpArguments& args) {
         std::vector<std::string> argv{(bin / name).string(), "--log-level", args.log_level};
         for (const auto& [flag, value] : {std::pair{"--retain-jobs", &args.retain_jobs},
                                           std::pair{"--retain-for", &args.retain_for},
-                                          std::pair{"--retain-mb", &args.retain_mb}}) {
+                                          std::pair{"--retain-mb", &args.retain_mb},
+                                          std::pair{"--max-job-seconds", &args.max_job_seconds}}) {
           if (*value) argv.insert(argv.end(), {flag, **value});
         }
         if (name == "ncbridge-step-writer" && !args.output_dir.empty()) {
@@ -192,6 +194,9 @@ void add_up_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--retain-mb", args->retain_mb, "... and step writers at most this many MB of results (default 1024)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-job-seconds", args->max_job_seconds,
+                  "Longest a job may run in a worker before it is stopped with an error (default 600; 0: no limit)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--log-level", args->log_level, "Services' log level")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}));
   cmd->callback([args, &exit_code]() { exit_code = run_up(*args); });

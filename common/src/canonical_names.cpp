@@ -60,6 +60,14 @@ template <> struct NameOf<OnReset> { static constexpr std::string_view value = "
 template <> struct NameOf<WaitSpindleOrientComplete> { static constexpr std::string_view value = "WAIT_SPINDLE_ORIENT_COMPLETE"; };
 template <> struct NameOf<Finish> { static constexpr std::string_view value = "FINISH"; };
 template <> struct NameOf<SetToolTableEntry> { static constexpr std::string_view value = "SET_TOOL_TABLE_ENTRY"; };
+template <> struct NameOf<NurbsFeed> { static constexpr std::string_view value = "NURBS_FEED"; };
+template <> struct NameOf<TurnProbeOn> { static constexpr std::string_view value = "TURN_PROBE_ON"; };
+template <> struct NameOf<TurnProbeOff> { static constexpr std::string_view value = "TURN_PROBE_OFF"; };
+template <> struct NameOf<LogOpen> { static constexpr std::string_view value = "LOGOPEN"; };
+template <> struct NameOf<LogAppend> { static constexpr std::string_view value = "LOGAPPEND"; };
+template <> struct NameOf<LogClose> { static constexpr std::string_view value = "LOGCLOSE"; };
+template <> struct NameOf<Log> { static constexpr std::string_view value = "LOG"; };
+template <> struct NameOf<Print> { static constexpr std::string_view value = "PRINT"; };
 }  // namespace
 
 std::string_view name_of(const Data& data) {

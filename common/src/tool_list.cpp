@@ -6,6 +6,7 @@
 #include <array>
 #include <charconv>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <utility>
 
@@ -34,16 +35,18 @@ constexpr std::array<std::pair<std::string_view, ToolType>, 9> kToolTypeAliases{
     {"chamfer", ToolType::ChamferMill},
 }};
 
-void sort_and_check(std::vector<Tool>& tools, const std::string& file) {
+// `where[i]` is where tool i's number was read (empty for a list built in code): a number
+// given twice is an error at its second place.
+void sort_and_check(std::vector<Tool>& tools, const std::string& file, const std::vector<SourceLocation>& where = {}) {
+  std::map<int, std::size_t> first;
   for (std::size_t i = 0; i < tools.size(); ++i) {
     if (tools[i].listed == 0) tools[i].listed = static_cast<int>(i) + 1;
-  }
-  std::sort(tools.begin(), tools.end(), [](const Tool& a, const Tool& b) { return a.number < b.number; });
-  for (std::size_t i = 1; i < tools.size(); ++i) {
-    if (tools[i].number == tools[i - 1].number) {
-      throw InputError({file, 0, 0}, "tool number " + std::to_string(tools[i].number) + " appears twice");
+    if (!first.emplace(tools[i].number, i).second) {
+      const SourceLocation at = i < where.size() ? where[i] : SourceLocation{file, 1, 1};
+      throw InputError(at, "tool number " + std::to_string(tools[i].number) + " appears twice");
     }
   }
+  std::sort(tools.begin(), tools.end(), [](const Tool& a, const Tool& b) { return a.number < b.number; });
 }
 
 }  // namespace
@@ -83,8 +86,10 @@ ToolList parse_tool_list(std::string_view text, const std::string& file) {
     throw InputError(location_of(root, file), "a tool list is a list of tools (or {\"tools\": [...]})");
   }
   std::vector<Tool> tools;
+  std::vector<SourceLocation> where;
   for (const YAML::Node& node : list) {
     if (!node.IsMap()) throw InputError(location_of(node, file), "each tool is an object");
+    if (node["number"]) where.push_back(location_of(node["number"], file));
     Tool t;
     t.number = required_int(node, "number", file);
     if (t.number < 0) throw InputError(location_of(node["number"], file), "tool number must be >= 0");
@@ -107,14 +112,17 @@ ToolList parse_tool_list(std::string_view text, const std::string& file) {
                         .value_or(optional_number(node, "tip_angle", file).value_or(0));
     t.thread_pitch = optional_number(node, "thread_pitch", file).value_or(0);
     t.pocket = static_cast<int>(optional_number(node, "pocket", file).value_or(t.number));
-    for (const char* key : {"diameter", "length", "corner_radius", "flute_length"}) {
+    t.spindle_rpm = optional_number(node, "rpm", file).value_or(optional_number(node, "spindle_rpm", file).value_or(0));
+    t.feed = optional_number(node, "feed", file).value_or(0);
+    t.plunge_feed = optional_number(node, "plunge", file).value_or(optional_number(node, "plunge_feed", file).value_or(0));
+    for (const char* key : {"diameter", "length", "corner_radius", "flute_length", "rpm", "spindle_rpm", "feed", "plunge", "plunge_feed"}) {
       if (node[key] && node[key].as<double>() < 0) {
         throw InputError(location_of(node[key], file), std::string(key) + " must not be negative");
       }
     }
     tools.push_back(std::move(t));
   }
-  sort_and_check(tools, file);
+  sort_and_check(tools, file, where);
   return ToolList(std::move(tools));
 }
 
@@ -126,6 +134,7 @@ ToolList read_tool_list(const std::filesystem::path& file) {
 ToolList parse_linuxcnc_tool_table(std::string_view text, LengthUnits units, const std::string& file) {
   const double to_mm = units == LengthUnits::Inches ? 25.4 : 1.0;
   std::vector<Tool> tools;
+  std::vector<SourceLocation> where;
   std::uint32_t line_no = 0;
   std::size_t pos = 0;
   while (pos <= text.size()) {
@@ -141,6 +150,7 @@ ToolList parse_linuxcnc_tool_table(std::string_view text, LengthUnits units, con
     }
     Tool t;
     bool has_t = false;
+    SourceLocation t_at{file, line_no, 1};
     std::size_t i = 0;
     while (i < line.size()) {
       char c = line[i];
@@ -158,7 +168,7 @@ ToolList parse_linuxcnc_tool_table(std::string_view text, LengthUnits units, con
         throw InputError({file, line_no, column}, std::string("bad number after '") + letter + "' in tool table");
       }
       switch (letter) {
-        case 'T': t.number = static_cast<int>(value); has_t = true; break;
+        case 'T': t.number = static_cast<int>(value); has_t = true; t_at.column = column; break;
         case 'P': t.pocket = static_cast<int>(value); break;
         case 'D': t.diameter = value * to_mm; break;
         case 'Z': t.length = value * to_mm; break;
@@ -177,8 +187,9 @@ ToolList parse_linuxcnc_tool_table(std::string_view text, LengthUnits units, con
     t.name = first == std::string::npos ? std::string() : comment.substr(first);
     if (t.pocket == 0) t.pocket = t.number;
     tools.push_back(std::move(t));
+    where.push_back(t_at);
   }
-  sort_and_check(tools, file);
+  sort_and_check(tools, file, where);
   return ToolList(std::move(tools));
 }
 

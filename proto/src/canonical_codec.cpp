@@ -15,7 +15,7 @@ namespace {
 namespace w = ncbridge::pb;
 
 // Every alternative of Data has a case below; a new alternative must be added here too.
-static_assert(std::variant_size_v<Data> == 56, "canonical::Data changed: update canonical.proto and this codec");
+static_assert(std::variant_size_v<Data> == 64, "canonical::Data changed: update canonical.proto and this codec");
 
 [[noreturn]] void malformed(const std::string& what) {
   throw InputError({"<canonical batch>", 0, 0}, what);
@@ -79,7 +79,10 @@ struct DataEncoder {
     m->set_a(d.a); m->set_b(d.b); m->set_c(d.c); m->set_u(d.u); m->set_v(d.v); m->set_w(d.w);
   }
   void operator()(const StraightFeed& d) { put_pose(d.end, *out.mutable_straight_feed()->mutable_end()); }
-  void operator()(const StraightProbe& d) { put_pose(d.end, *out.mutable_straight_probe()->mutable_end()); }
+  void operator()(const StraightProbe& d) {
+    put_pose(d.end, *out.mutable_straight_probe()->mutable_end());
+    out.mutable_straight_probe()->set_probe_type(d.probe_type);
+  }
   void operator()(const RigidTap& d) {
     auto* m = out.mutable_rigid_tap();
     put_pose(d.end, *m->mutable_end());
@@ -149,6 +152,24 @@ struct DataEncoder {
     m->set_backangle(d.backangle);
     m->set_orientation(d.orientation);
   }
+  void operator()(const NurbsFeed& d) {
+    auto* m = out.mutable_nurbs_feed();
+    m->mutable_control_points()->Reserve(static_cast<int>(d.control_points.size()));
+    for (const NurbsControlPoint& p : d.control_points) {
+      auto* q = m->add_control_points();
+      q->set_x(p.x);
+      q->set_y(p.y);
+      q->set_weight(p.weight);
+    }
+    m->set_order(d.order);
+  }
+  void operator()(const TurnProbeOn&) { out.mutable_turn_probe_on(); }
+  void operator()(const TurnProbeOff&) { out.mutable_turn_probe_off(); }
+  void operator()(const LogOpen& d) { out.mutable_log_open()->set_text(d.path); }
+  void operator()(const LogAppend& d) { out.mutable_log_append()->set_text(d.path); }
+  void operator()(const LogClose&) { out.mutable_log_close(); }
+  void operator()(const Log& d) { out.mutable_log()->set_text(d.text); }
+  void operator()(const Print& d) { out.mutable_print()->set_text(d.text); }
 };
 
 void put_call(const Call& call, w::Call& out) {
@@ -228,7 +249,10 @@ Data get_data(const w::Call& in, const CallContext& at) {
                      m.axis_end_point(), m.a(), m.b(), m.c(), m.u(), m.v(), m.w()};
     }
     case C::kStraightFeed: return StraightFeed{get_pose(in.straight_feed().end())};
-    case C::kStraightProbe: return StraightProbe{get_pose(in.straight_probe().end())};
+    case C::kStraightProbe: {
+      if (in.straight_probe().probe_type() > std::numeric_limits<std::uint8_t>::max()) bad_call(at, "probe_type out of range");
+      return StraightProbe{get_pose(in.straight_probe().end()), static_cast<std::uint8_t>(in.straight_probe().probe_type())};
+    }
     case C::kRigidTap: return RigidTap{get_pose(in.rigid_tap().end()), in.rigid_tap().scale()};
     case C::kDwell: return Dwell{in.dwell().seconds()};
     case C::kSetSpindleSpeed: return SetSpindleSpeed{in.set_spindle_speed().spindle(), in.set_spindle_speed().rpm()};
@@ -277,6 +301,21 @@ Data get_data(const w::Call& in, const CallContext& at) {
       return SetToolTableEntry{m.pocket(), m.tool(), get_pose(m.offset()), m.diameter(),
                                m.frontangle(), m.backangle(), m.orientation()};
     }
+    case C::kNurbsFeed: {
+      const auto& m = in.nurbs_feed();
+      NurbsFeed f;  // any values: what reads it checks the order against the points
+      f.order = m.order();
+      f.control_points.reserve(static_cast<std::size_t>(m.control_points_size()));
+      for (const auto& p : m.control_points()) f.control_points.push_back({p.x(), p.y(), p.weight()});
+      return f;
+    }
+    case C::kTurnProbeOn: return TurnProbeOn{};
+    case C::kTurnProbeOff: return TurnProbeOff{};
+    case C::kLogOpen: return LogOpen{in.log_open().text()};
+    case C::kLogAppend: return LogAppend{in.log_append().text()};
+    case C::kLogClose: return LogClose{};
+    case C::kLog: return Log{in.log().text()};
+    case C::kPrint: return Print{in.print().text()};
     case C::DATA_NOT_SET: break;
   }
   bad_call(at, "no canonical function (unknown or missing call data)");

@@ -45,7 +45,9 @@ class RecognizerStream final : public service::JobStream {
     const stepnc::Project project = model_.take();
     const auto stock = feature_recognizer::stock_from_cc1(project);
     if (!stock) throw InputError({"<stepnc model>", 0, 0}, "CC2 needs the stock, and the job's model has no rawpiece");
-    const auto features = feature_recognizer::recognize(feature_recognizer::workingsteps_from_cc1(project), *stock);
+    feature_recognizer::Options options;
+    options.checkpoint = [this] { context_.check_time(); };  // the worker's job time limit
+    const auto features = feature_recognizer::recognize(feature_recognizer::workingsteps_from_cc1(project), *stock, options);
     const auto cc2 = feature_recognizer::cc2_from_cc1(project, features);
     for (const std::string& w : cc2.warnings) spdlog::warn("job {}: {}", context_.job_id(), w);
     spdlog::info("job {}: {} features recognised", context_.job_id(), features.size());

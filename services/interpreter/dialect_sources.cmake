@@ -39,7 +39,10 @@ list(APPEND NCBRIDGE_INTERPRETER_SOURCES
   src/mach3/mach3_flavour.cpp
   src/heidenhain/heidenhain_front_end.cpp
   src/heidenhain/corner_rounding.cpp
+  src/heidenhain/pocket_cycles.cpp
+  src/heidenhain/sl_cycles.cpp
   src/siemens840d/siemens_front_end.cpp
   src/siemens840d/pocket_milling.cpp
   src/dialect_detect/dialect_detect.cpp
+  src/dialect_detect/trial_reading.cpp
 )

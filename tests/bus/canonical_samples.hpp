@@ -26,6 +26,10 @@ void fill(T& t, std::uint32_t seed) {
     t = static_cast<T>(seed) * 1.0625 + 0.1 / static_cast<T>(seed + 3);
   } else if constexpr (std::is_integral_v<T>) {
     t = static_cast<T>(seed * 7 + 3);
+  } else if constexpr (requires { t.emplace_back(); }) {  // a vector: one to three elements
+    t.resize(seed % 3 + 1);
+    std::uint32_t i = 0;
+    for (auto& e : t) fill(e, seed * 17 + ++i);
   } else {
     std::uint32_t i = 0;
     std::apply([&](auto&... f) { (fill(f, seed * 31 + ++i), ...); }, tie_fields(t));
@@ -38,6 +42,12 @@ bool same_bits(const T& a, const T& b) {
     return a == b;
   } else if constexpr (std::is_arithmetic_v<T> || std::is_enum_v<T>) {
     return std::memcmp(&a, &b, sizeof(T)) == 0;
+  } else if constexpr (requires { a.size(); a[0]; }) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      if (!same_bits(a[k], b[k])) return false;
+    }
+    return true;
   } else {
     auto fa = tie_fields(a);
     auto fb = tie_fields(b);

@@ -155,5 +155,117 @@ TEST(Cc1File, EveryCorpusProgramGivesASchemaValidFileThatReadsBackIdentically) {
   }
 }
 
+// Splines (G5 cubic, G5.1 quadratic, G5.2/G5.3 NURBS) are toolpath curves of their own:
+// B_SPLINE_CURVE_WITH_KNOTS, and with unequal weights the complex instance with
+// RATIONAL_B_SPLINE_CURVE. The file is schema-valid, reads back to the same model and bytes, and
+// the curves pass through the points LinuxCNC's NURBS would.
+TEST(Cc1File, SplinesAreBSplineCurvesThatReadBack) {
+  const fs::path paper = kShared / "corpus/paper";
+  Options o;
+  o.tools = setup::read_tool_list(paper / "tools.json");
+  o.stock = setup::read_stock(paper / "stock.json");
+  interpreter::Options io;
+  io.tools = o.tools;
+  Cc1Builder builder(o);
+  interpreter::interpret_text(
+      "G21 G90 G17\nT1 M6\nS1000 M3\nG0 X10 Y10 Z5\nG1 Z-1 F300\n"
+      "G5 I10 J0 P-10 Q0 X30 Y30\n"               // cubic Bezier (10,10) (20,10) (20,30) (30,30)
+      "G5.1 I10 J0 X50 Y50\n"                     // quadratic Bezier (30,30) (40,30) (50,50)
+      "G5.2 X60 Y40 P1 L3\nX70 Y50 P1\nX80 Y40 P1\nG5.3\n"  // equal weights: not rational
+      "G5.2 X85 Y50 P2\nX90 Y40 P0.5\nX95 Y50 P1\nG5.3\n"   // rational
+      "G0 Z5\nM2\n",
+      "splines.ngc", io, builder);
+  const stepnc::Project project = builder.take_project();
+  const std::string text = cc1_text(project);
+  EXPECT_EQ(check(text, "splines.stp").size(), 0u) << joined(check(text, "splines.stp"));
+  const auto back = step_writer::read_stepnc(text, "splines.stp");
+  EXPECT_TRUE(back.warnings.empty());
+  EXPECT_EQ(cc1_text(back.project), text);
+
+  std::vector<stepnc::BSplineCurve> splines;
+  for (const auto& e : back.project.main_workplan.its_elements) {
+    const auto* ws = std::get_if<stepnc::MachiningWorkingstep>(&e);
+    if (!ws) continue;
+    const auto& op = stepnc::machining_operation(back.project.operations.at(ws->its_operation.index));
+    for (const auto& t : op.its_toolpath->its_list) {
+      for (const auto& seg : t.basiccurve.segments) {
+        if (const auto* b = std::get_if<stepnc::BSplineCurve>(&seg)) splines.push_back(*b);
+      }
+    }
+  }
+  ASSERT_EQ(splines.size(), 4u);
+  // G5: a cubic Bezier; its middle is (P0 + 3 P1 + 3 P2 + P3) / 8, at the cut's depth.
+  EXPECT_EQ(splines[0].degree, 3);
+  EXPECT_EQ(splines[0].knot_spec, stepnc::KnotType::PiecewiseBezierKnots);
+  EXPECT_TRUE(splines[0].weights.empty());
+  const auto mid = stepnc::bspline_point(splines[0], 0.5);
+  EXPECT_NEAR(mid.x, (10 + 3 * 20 + 3 * 20 + 30) / 8.0, 1e-12);
+  EXPECT_NEAR(mid.y, (10 + 3 * 10 + 3 * 30 + 30) / 8.0, 1e-12);
+  EXPECT_DOUBLE_EQ(mid.z, -1);
+  EXPECT_EQ(splines[1].degree, 2);
+  EXPECT_EQ(stepnc::bspline_point(splines[1], 1.0), (stepnc::CartesianPoint{50, 50, -1}));
+  // G5.2 with four points of order 3: LinuxCNC's knots 0 0 0 1 2 2 2, i.e. 0 (x3), 1, 2 (x3).
+  EXPECT_EQ(splines[2].knots, (std::vector<double>{0, 1, 2}));
+  EXPECT_EQ(splines[2].knot_multiplicities, (std::vector<int>{3, 1, 3}));
+  EXPECT_EQ(splines[2].knot_spec, stepnc::KnotType::QuasiUniformKnots);
+  EXPECT_TRUE(splines[2].weights.empty());
+  EXPECT_EQ(splines[3].weights, (std::vector<double>{1, 2, 0.5, 1}));
+  EXPECT_EQ(stepnc::bspline_point(splines[3], 2.0), (stepnc::CartesianPoint{95, 50, -1}));
+  // At its inner knot the quadratic curve is halfway between control points 1 and 2 (basis
+  // functions 1/2 and 1/2), weighted: (2 (85, 50) + 0.5 (90, 40)) / 2.5.
+  const auto k1 = stepnc::bspline_point(splines[3], 1.0);
+  EXPECT_NEAR(k1.x, (2 * 85 + 0.5 * 90) / 2.5, 1e-12);
+  EXPECT_NEAR(k1.y, (2 * 50 + 0.5 * 40) / 2.5, 1e-12);
+  EXPECT_NE(text.find("B_SPLINE_CURVE_WITH_KNOTS('',3,"), std::string::npos);
+  EXPECT_NE(text.find("=(BOUNDED_CURVE()B_SPLINE_CURVE('',2,"), std::string::npos);  // the complex instance
+}
+
+// A program that probes the part (G38.2 down, G38.3 sideways), sets its work offset from the
+// result and cuts: the probing moves are WORKPIECE_PROBING workingsteps (touch probing, ISO
+// 14649-10), the G38.4 retract is left out with a warning naming its line, the cut converts.
+TEST(Cc1File, ProbingIsWorkpieceProbingAndTheCuttingAfterItConverts) {
+  const fs::path paper = kShared / "corpus/paper";
+  Options o;
+  o.tools = setup::read_tool_list(paper / "tools.json");
+  o.stock = setup::read_stock(paper / "stock.json");
+  interpreter::Options io;
+  io.tools = o.tools;
+  Cc1Builder builder(o);
+  interpreter::interpret_text(
+      "G21 G90 G17\nT1 M6\nG0 X10 Y10 Z20\nG38.2 Z-10 F100\nG10 L20 P1 Z0\nG38.4 Z5\n"
+      "G0 X-10 Y50 Z-2\nG38.3 X20\nG0 Z20\n"
+      "S1000 M3\nG0 X0 Y0\nG1 Z-1 F300\nX50\nY50\nG0 Z20\nM2\n",
+      "probing.ngc", io, builder);
+  const std::vector<Warning> warnings = builder.warnings();
+  const stepnc::Project project = builder.take_project();
+  // The offset set from the probe comes after the first motion: the cut is converted into the
+  // setup's frame, and said so.
+  ASSERT_EQ(warnings.size(), 2u);
+  const bool frame_first = warnings[0].message.find("work offset changed") != std::string::npos;
+  const Warning& away = warnings[frame_first ? 1 : 0];
+  EXPECT_EQ(away.where.line, 6u);
+  EXPECT_NE(away.message.find("G38.4"), std::string::npos);
+  EXPECT_NE(warnings[frame_first ? 0 : 1].message.find("work offset changed"), std::string::npos);
+  const std::string text = cc1_text(project);
+  EXPECT_EQ(check(text, "probing.stp").size(), 0u) << joined(check(text, "probing.stp"));
+  const auto back = step_writer::read_stepnc(text, "probing.stp");
+  EXPECT_TRUE(back.warnings.empty());
+  EXPECT_EQ(cc1_text(back.project), text);
+  std::vector<stepnc::WorkpieceProbing> probings;
+  int workingsteps = 0;
+  for (const auto& e : back.project.main_workplan.its_elements) {
+    if (const auto* w = std::get_if<stepnc::WorkpieceProbing>(&e)) probings.push_back(*w);
+    if (std::holds_alternative<stepnc::MachiningWorkingstep>(e)) ++workingsteps;
+  }
+  ASSERT_EQ(probings.size(), 2u);
+  EXPECT_EQ(workingsteps, 1);
+  EXPECT_EQ(probings[0].its_direction, (stepnc::Direction{0, 0, -1}));
+  EXPECT_DOUBLE_EQ(probings[0].expected_value.theoretical_size, 15);
+  EXPECT_EQ(probings[0].measured_offset.its_name, "#5063");
+  EXPECT_EQ(probings[0].its_probe, "T1");
+  EXPECT_EQ(probings[1].its_direction, (stepnc::Direction{1, 0, 0}));
+  EXPECT_NE(text.find("TOUCH_PROBE('T1')"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace ncbridge::cc1_builder::testing

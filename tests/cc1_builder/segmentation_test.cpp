@@ -137,14 +137,50 @@ TEST(Segmentation, FirstMotionAsFeedWarnsAndStartsThere) {
 TEST(Segmentation, RepeatedProbeWarningsAreSummedUpAfterTen) {
   CanonicalStream s;
   s.tool(1).spindle_cw(600).feed(100).rapid(0, 0, 5);
-  for (int i = 0; i < 25; ++i) s.add(canonical::StraightProbe{canonical::Pose{}});
+  canonical::Pose away;
+  away.z = 10;
+  for (int i = 0; i < 25; ++i) s.add(canonical::StraightProbe{away, 2});  // G38.4: away from contact
   s.end();
   std::vector<Warning> warnings;
-  build_cc1(s.calls, paper_options(), &warnings);
+  const auto p = build_cc1(s.calls, paper_options(), &warnings);
+  EXPECT_EQ(workplan_shape(p), "");  // nothing but the probes, left out
   ASSERT_EQ(warnings.size(), 11u);
-  EXPECT_NE(warnings[0].message.find("probing move (G38)"), std::string::npos);
-  EXPECT_EQ(warnings[10].message.rfind("15 more probing moves", 0), 0u) << warnings[10].message;
+  EXPECT_NE(warnings[0].message.find("probing away from the workpiece (G38.4, G38.5)"), std::string::npos);
+  EXPECT_EQ(warnings[10].message.rfind("15 more probing moves away", 0), 0u) << warnings[10].message;
   EXPECT_EQ(warnings[10].where.line, s.current_line() - 1);  // the last probe
+}
+
+// G38.2/G38.3 moves become WORKPIECE_PROBING workingsteps between the cuts, which still convert.
+TEST(Segmentation, ProbingTowardsThePartIsAWorkpieceProbing) {
+  CanonicalStream s;
+  canonical::Pose down;
+  down.x = 10;
+  down.y = 20;
+  down.z = -15;
+  canonical::Pose side = down;
+  side.x = 40;
+  s.tool(1).spindle_cw(600).feed(100).rapid(10, 20, 5);
+  const std::uint32_t probe_line = s.current_line() + 1;
+  s.add(canonical::StraightProbe{down, 0}).add(canonical::StraightProbe{side, 1});  // G38.2 Z, G38.3 X
+  s.rapid(0, 0, 5).line(0, 0, -1).line(5, 0, -1).rapid(5, 0, 5).end();
+  std::vector<Warning> warnings;
+  const auto p = build_cc1(s.calls, paper_options(), &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front().message;
+  ASSERT_EQ(workplan_shape(p), "PPRWR");  // a lone first traverse draws nothing
+  const auto& z = std::get<stepnc::WorkpieceProbing>(p.main_workplan.its_elements[0]);
+  EXPECT_EQ(z.start_position.location, (CartesianPoint{10, 20, 5}));
+  EXPECT_EQ(z.its_direction, (stepnc::Direction{0, 0, -1}));
+  EXPECT_DOUBLE_EQ(z.expected_value.theoretical_size, 10);  // contact anywhere in the 20 mm: 10 +/- 10
+  EXPECT_DOUBLE_EQ(z.expected_value.upper_limit, 10);
+  EXPECT_DOUBLE_EQ(z.expected_value.lower_limit, 10);
+  EXPECT_EQ(z.measured_offset.its_name, "#5063");
+  EXPECT_EQ(z.its_probe, "T1");
+  EXPECT_EQ(z.source.first_line, probe_line);
+  const auto& x = std::get<stepnc::WorkpieceProbing>(p.main_workplan.its_elements[1]);
+  EXPECT_EQ(x.start_position.location, (CartesianPoint{10, 20, -15}));
+  EXPECT_EQ(x.its_direction, (stepnc::Direction{1, 0, 0}));
+  EXPECT_EQ(x.measured_offset.its_name, "#5061");
+  EXPECT_EQ(polyline_points(operation_of(p, 0)), (std::vector<CartesianPoint>{{0, 0, 5}, {0, 0, -1}, {5, 0, -1}}));
 }
 
 TEST(Segmentation, WorkOffsetBecomesTheSetupOriginAndLaterChangesAreConverted) {

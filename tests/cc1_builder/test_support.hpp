@@ -46,7 +46,9 @@ inline Options paper_options() {
 // "W" for a machining workingstep, "R" for a rapid movement, in workplan order.
 inline std::string workplan_shape(const stepnc::Project& p) {
   std::string s;
-  for (const auto& e : p.main_workplan.its_elements) s += std::holds_alternative<stepnc::RapidMovement>(e) ? 'R' : 'W';
+  for (const auto& e : p.main_workplan.its_elements) {
+    s += std::holds_alternative<stepnc::RapidMovement>(e) ? 'R' : std::holds_alternative<stepnc::WorkpieceProbing>(e) ? 'P' : 'W';
+  }
   return s;
 }
 

@@ -123,7 +123,7 @@ TEST(Cc2Model, OpenPocketBoundaryIsSplitIntoTheOpenSideAndTheWalls) {
   EXPECT_EQ(cc2.feature_ids, std::vector<std::string>{"OPEN POCKET1"});
 }
 
-TEST(Cc2Model, StepFrameStartsAtItsOpenEdgeWithYIntoThePart) {
+TEST(Cc2Model, StepFrameStartsAtItsWallWithYTowardsTheOpenSide) {
   fr::RecognizedFeature f;
   f.type = fr::FeatureType::Step;
   f.x = 95, f.y = 40, f.top_z = 30, f.bottom_z = 22;
@@ -131,9 +131,10 @@ TEST(Cc2Model, StepFrameStartsAtItsOpenEdgeWithYIntoThePart) {
   f.open_sides = {fr::OpenSide::XPlus, fr::OpenSide::YMinus, fr::OpenSide::YPlus};
   const auto cc2 = fr::cc2_from_cc1(sn::Project{}, {f});
   const auto& step = std::get<sn::Step>(cc2.project.features.at(0));
-  // Open along x = 100: local x runs along the edge (+Y), local y into the part (-X).
-  EXPECT_EQ(step.feature_placement.location, (sn::CartesianPoint{100, 0, 30}));
-  EXPECT_EQ(step.feature_placement.ref_direction, (sn::Direction{0, 1, 0}));
+  // Open along x = 100, its wall at x = 90: local x runs along the wall (-Y), local y out of
+  // the part (+X), towards the open side.
+  EXPECT_EQ(step.feature_placement.location, (sn::CartesianPoint{90, 80, 30}));
+  EXPECT_EQ(step.feature_placement.ref_direction, (sn::Direction{0, -1, 0}));
   EXPECT_DOUBLE_EQ(step.open_boundary.distance.theoretical_size, 80);
   EXPECT_EQ(step.depth.position.location, (sn::CartesianPoint{0, 0, -8}));
 }

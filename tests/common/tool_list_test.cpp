@@ -36,6 +36,18 @@ TEST(ToolList, ReadsEveryCamCorpusToolListWithFreeCadNames) {
   }
 }
 
+TEST(ToolList, CuttingDataOfTheShop) {
+  const ToolList tools = read_tool_list(NCBRIDGE_SHARED_DIR "/corpus/cam/p01_block_reference/tools.json");
+  const Tool* face = tools.find(1);
+  ASSERT_NE(face, nullptr);
+  EXPECT_DOUBLE_EQ(face->spindle_rpm, 2500);
+  EXPECT_DOUBLE_EQ(face->feed, 1200);
+  EXPECT_DOUBLE_EQ(face->plunge_feed, 300);
+  const ToolList paper = read_tool_list(NCBRIDGE_SHARED_DIR "/corpus/paper/tools.json");
+  EXPECT_DOUBLE_EQ(paper.find(1)->feed, 0);  // not given
+  EXPECT_THROW(parse_tool_list(R"([{"number": 1, "feed": -5}])", "t.json"), InputError);
+}
+
 TEST(ToolList, YamlFormIsAccepted) {
   const ToolList tools = parse_tool_list(
       "tools:\n  - {number: 7, type: ball_end_mill, diameter: 6, corner_radius: 3}\n"

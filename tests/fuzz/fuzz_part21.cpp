@@ -1,6 +1,7 @@
 // libFuzzer target: the Part 21 reader must reject garbage with an InputError, never crash; what
 // it accepts must write, read back to the same graph, and write to the same bytes; the schema
-// check must cope with whatever graph it is given.
+// check must cope with whatever graph it is given, and the ISO 14649 reader (read_stepnc) with
+// whatever file.
 #include <cstdint>
 #include <cstdlib>
 #include <string>
@@ -10,6 +11,7 @@
 #include "ncbridge/step_writer/part21_reader.hpp"
 #include "ncbridge/step_writer/part21_writer.hpp"
 #include "ncbridge/step_writer/schema_check.hpp"
+#include "ncbridge/step_writer/stepnc_file.hpp"
 
 namespace {
 
@@ -39,6 +41,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   check_instances(first.graph, small_schema(), {"fuzz.stp"});
+  try {  // as an ISO 14649 program (toolpath curves, B-splines, ...): an InputError or a model
+    read_stepnc(text, "fuzz.stp");
+  } catch (const ncbridge::InputError&) {
+  }
   part21::WriteOptions options;
   options.unix_time = 0;
   std::string written;

@@ -14,34 +14,7 @@ if ! command -v linuxcnc > /dev/null; then
 fi
 [[ $(id -u) == 0 ]] || { echo "SKIP: needs root to make the controller's user"; exit 77; }
 
-here=$(dirname "$0")/linuxcnc
-# LinuxCNC's Python module is installed for Debian's Python, whatever python3 is first on PATH.
-python=/usr/bin/python3
-user=ncb-cnc  # short: ipcs prints at most 10 characters of an owner
-id "$user" > /dev/null 2>&1 || useradd -m "$user"
-chmod 755 "$WORK"
-cfg=$WORK/lcnc
-mkdir -p "$cfg/nc" "$WORK/out"
-
-# The controller: LinuxCNC's sample simulated mill (mm), with linuxcncrsh as its display (no
-# window), no manual tool change dialog (the HAL loops tool change back), fast axes.
-sample=/usr/share/doc/linuxcnc/examples/sample-configs/sim/axis/axis_mm.ini
-sed -e 's/^DISPLAY = .*/DISPLAY = linuxcncrsh/' -e '/axis_manualtoolchange.hal/d' \
-    -e 's/^MAX_FEED_OVERRIDE = .*/MAX_FEED_OVERRIDE = 200/' \
-    -e 's/^MAX_VELOCITY = .*/MAX_VELOCITY = 4000/' -e 's/^MAX_LINEAR_VELOCITY = .*/MAX_LINEAR_VELOCITY = 6000/' \
-    -e 's/^MAX_ACCELERATION = .*/MAX_ACCELERATION = 40000/' -e 's/^MAX_LINEAR_ACCELERATION = .*/MAX_LINEAR_ACCELERATION = 60000/' \
-    -e 's/^DEFAULT_LINEAR_ACCELERATION = .*/DEFAULT_LINEAR_ACCELERATION = 40000/' \
-    -e 's/^MIN_LIMIT = .*/MIN_LIMIT = -2000/' -e 's/^MAX_LIMIT = .*/MAX_LIMIT = 2000/' \
-    -e 's/^FERROR = .*/FERROR = 1000/' -e 's/^MIN_FERROR = .*/MIN_FERROR = 1000/' \
-    -e "s#^PROGRAM_PREFIX = .*#PROGRAM_PREFIX = $cfg/nc#" -e 's/^TOOL_TABLE = .*/TOOL_TABLE = tools.tbl/' \
-    "$sample" > "$cfg/mill.ini"
-# The paper's tools as the controller's tool table and as the services' tool list.
-cat > "$cfg/tools.tbl" <<'TBL'
-T1 P1 Z50 D18 ;ENDMILL_18MM
-T2 P2 Z70 D20 ;DRILL_20MM
-T3 P3 Z50 D22 ;REAMER_22MM
-TBL
-chown -R "$user" "$cfg"
+source "$(dirname "$0")/linuxcnc/controller.sh"
 
 # instrument PROGRAM OUT LOG: a copy whose every block (not o-word lines) logs its line number
 # through LinuxCNC's LOG comment, so LinuxCNC itself writes the lines it executed.
@@ -84,34 +57,9 @@ M5
 M30
 NGC
 instrument "$WORK/flow.ngc" "$cfg/nc/flow.ngc" "$cfg/flow.log"
-cp "$here/drive.py" "$cfg/drive.py"
-drive=$cfg/drive.py
 chown -R "$user" "$cfg"
 
-# Stops the controller as its start script would be stopped (it then unloads HAL and the
-# realtime part); what is left after 20 s is killed and HAL's memory unloaded.
-stop_controller() {
-  pkill -TERM -u "$user" -f "linuxcnc $cfg/mill.ini" 2>/dev/null || true
-  for _ in $(seq 1 200); do pgrep -u "$user" > /dev/null || break; sleep 0.1; done
-  pkill -KILL -u "$user" 2>/dev/null || true
-  su "$user" -c "halrun -U" > /dev/null 2>&1 || true
-  # NML's buffers and their semaphores: a controller started over stale ones never hears its IO
-  for kind in m s; do
-    ipcs -$kind | awk -v u="$user" '$3 == u { print $2 }' | xargs -r -n 1 ipcrm -$kind 2>/dev/null || true
-  done
-  [[ $(stat -c %U /tmp/linuxcnc.lock 2>/dev/null) == "$user" ]] && rm -f /tmp/linuxcnc.lock
-  return 0
-}
-# as_user CMD...: the shell command that runs CMD as the controller's user (su -c), with this
-# test's DDS settings.
-as_user() {
-  printf 'export CYCLONEDDS_URI=%q NCBRIDGE_DDS_DOMAIN=%q; exec ' "$CYCLONEDDS_URI" "$NCBRIDGE_DDS_DOMAIN"
-  printf '%q ' "$@"
-}
-stop_controller  # a controller left by an earlier run
-CLEANUP_HOOKS+=("stop_controller")
-start linuxcnc su "$user" -c "cd '$cfg' && exec script -qfc 'linuxcnc $cfg/mill.ini' '$cfg/linuxcnc.typescript'"
-su "$user" -c "$(as_user timeout 90 "$python" "$drive" wait)" || fail "LinuxCNC did not start: $(tail -n 20 "$cfg/linuxcnc.typescript" 2>/dev/null)"
+start_controller
 
 start up "$BIN/ncbridge" up --workers 1 --live-tools "$TOOLS_PAPER" --live-stock "$STOCK_PAPER" --output-dir "$WORK/out"
 wait_workers 1

@@ -19,7 +19,9 @@ Axis2Placement3d placement(double k) { return {{k, k + 0.5, -k}, {0, 1, 0}, {0, 
 TolerancedLengthMeasure measure(double k) { return {k, 0.01 * k, -0.02 * k, 5}; }
 CompositeCurve curve(double k) {
   TrimmedCircle arc{placement(k), 2.5 * k, {k, 0, 0}, 0.25, {0, k, 0}, 1.75, false};
-  return {{Polyline{{{0, 0, k}, {k, 1, k}, {k, k, k}}}, arc}};
+  BSplineCurve spline{2, {{k, k, 0}, {k, 2 * k, 0}, {3 * k, k, 0}}, {3, 3}, {0, k}, KnotType::PiecewiseBezierKnots,
+                      {1, 0.5 * k, 1}};
+  return {{Polyline{{{0, 0, k}, {k, 1, k}, {k, k, k}}}, arc, spline}};
 }
 LinearPath path(double k) { return {placement(k), measure(k), {0, 1, 0}}; }
 template <class F> F feature(double k) {
@@ -196,6 +198,16 @@ Project every_type_project() {
   rapid.its_id = "rapid";
   rapid.its_toolpath = machining(3).its_toolpath;
   p.main_workplan.its_elements.emplace_back(rapid);
+  WorkpieceProbing probing;
+  probing.its_id = "probing";
+  probing.its_secplane.position = placement(7);
+  probing.measured_offset = {"#5063", 1.5};
+  probing.start_position = placement(8);
+  probing.its_direction = {0, 0, -1};
+  probing.expected_value = measure(9);
+  probing.its_probe = "T99";
+  probing.source = {2, 40, 41};
+  p.main_workplan.its_elements.emplace_back(probing);
   return p;
 }
 
@@ -216,6 +228,14 @@ std::set<std::size_t> all_of(std::size_t n) {
 
 TEST(StepncCodecEveryType, HoldsEveryAlternativeOfTheModel) {
   const Project p = every_type_project();
+  EXPECT_EQ(alternatives<Executable>(p.main_workplan.its_elements, [](const Executable& e) { return &e; }),
+            all_of(std::variant_size_v<Executable>));
+  const auto segments = alternatives<CurveSegment>(p.operations, [](const Operation& o) -> const CurveSegment* {
+    const auto& toolpath = machining_operation(o).its_toolpath;
+    return toolpath && !toolpath->its_list.empty() && toolpath->its_list[0].basiccurve.segments.size() > 2
+               ? &toolpath->its_list[0].basiccurve.segments[2] : nullptr;
+  });
+  EXPECT_EQ(segments, (std::set<std::size_t>{2}));  // curve()'s third segment is a B-spline
   EXPECT_EQ(alternatives<Feature>(p.features, [](const Feature& f) { return &f; }), all_of(std::variant_size_v<Feature>));
   EXPECT_EQ(alternatives<Operation>(p.operations, [](const Operation& o) { return &o; }),
             all_of(std::variant_size_v<Operation>));

@@ -172,4 +172,47 @@ TEST(InterpreterCore, CannedCycleCallsCarryTheirHole) {
   EXPECT_EQ(last_id, 2u);
 }
 
+// rs274 prints only the number of control points of a NURBS_FEED; the points themselves are
+// checked here against the LinuxCNC rules worked by hand.
+std::vector<canonical::NurbsFeed> nurbs_of(const std::string& program) {
+  std::vector<canonical::NurbsFeed> out;
+  for (const auto& c : run(program)) {
+    if (const auto* n = std::get_if<canonical::NurbsFeed>(&c.data)) out.push_back(*n);
+  }
+  return out;
+}
+
+TEST(InterpreterCore, SplinesCarryTheirControlPoints) {
+  using P = canonical::NurbsControlPoint;
+  const auto curves = nurbs_of(
+      "G21 G90 G17 F100\nG0 X1 Y2\n"
+      "G5 I3 J0 P-1 Q-2 X10 Y5\n"   // cubic: start, start + IJ, end + PQ, end
+      "G5 P0 Q4 X20 Y5\n"           // no IJ: the first handle mirrors the last PQ (+1, +2)
+      "G5.1 I2 J-3 X30 Y0\n"        // quadratic: start, start + IJ, end
+      // weights, order 4; in G91 every point is relative to where the curve starts (LinuxCNC
+      // moves the current point only at G5.3)
+      "G91 G5.2 X5 Y5 P2 L4\nX5 Y-5 P0.5\nX10 Y0 P1\nG5.3\n"
+      "G90 G5.2 P3\nX50 Y0 P1\nX60 Y10 P1\nG5.3\nM2\n");     // P alone weighs the first point
+  ASSERT_EQ(curves.size(), 5u);
+  EXPECT_EQ(curves[0].order, 4);
+  EXPECT_EQ(curves[0].control_points, (std::vector<P>{{1, 2, 1}, {4, 2, 1}, {9, 3, 1}, {10, 5, 1}}));
+  EXPECT_EQ(curves[1].control_points, (std::vector<P>{{10, 5, 1}, {11, 7, 1}, {20, 9, 1}, {20, 5, 1}}));
+  EXPECT_EQ(curves[2].order, 3);
+  EXPECT_EQ(curves[2].control_points, (std::vector<P>{{20, 5, 1}, {22, 2, 1}, {30, 0, 1}}));
+  EXPECT_EQ(curves[3].order, 4);
+  EXPECT_EQ(curves[3].control_points, (std::vector<P>{{30, 0, 1}, {35, 5, 2}, {35, -5, 0.5}, {40, 0, 1}}));
+  EXPECT_EQ(curves[4].order, 3);
+  EXPECT_EQ(curves[4].control_points, (std::vector<P>{{40, 0, 3}, {50, 0, 1}, {60, 10, 1}}));
+}
+
+TEST(InterpreterCore, NurbsControlPointsNeedAPositiveWeight) {
+  // rs274 takes a first G5.2 block with X and Y but no P and weighs that point -1: refused here.
+  const InputError missing = error_of("G21 G17 F100\nG0 X0 Y0\nG5.2 X10 Y0 L3\nX20 Y10 P1\nX30 Y0 P1\nG5.3\nM2\n");
+  EXPECT_EQ(missing.where().line, 3u);
+  EXPECT_NE(std::string(missing.what()).find("positive weight P"), std::string::npos);
+  const InputError zero = error_of("G21 G17 F100\nG0 X0 Y0\nG5.2 X10 Y0 P1\nX20 Y10 P0\nG5.3\nM2\n");
+  EXPECT_EQ(zero.where().line, 4u);
+  EXPECT_EQ(zero.where().column, 9u);
+}
+
 }  // namespace

@@ -105,6 +105,10 @@ TEST(Ap224Ramp, EveryRoundHoleWithDiameterDepthAndBottom) {
   EXPECT_NEAR(large.diameter, 1.116 * kInch, 1e-9);
   EXPECT_NEAR(large.depth, 0.65 * kInch, 1e-9);
   EXPECT_EQ(large.bottom, pr::HoleBottom::Flat);
+  ASSERT_TRUE(large.diameter_tolerance.has_value());  // +/- 0.001 in
+  EXPECT_NEAR(large.diameter_tolerance->first, 0.001 * kInch, 1e-12);
+  EXPECT_NEAR(large.diameter_tolerance->second, -0.001 * kInch, 1e-12);
+  EXPECT_FALSE(small.diameter_tolerance.has_value());
   // Both open at z = 0 and go up into the part: the tool comes from -z.
   for (const auto* h : {&small, &large}) {
     expect_point(h->placement.location, 0, 1.914928e-16 * kInch, 0);

@@ -28,6 +28,11 @@ void add_service_options(CLI::App& app, ServiceOptions& options) {
          "--retain-mb", [&options](double mb) { options.runner.retention.max_result_bytes = static_cast<std::uint64_t>(mb * 1048576.0); },
          "Megabytes of final results (Part 21 files) kept on the bus (default 1024)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option_function<double>(
+         "--max-job-seconds",
+         [&options](double s) { options.runner.max_job_time = std::chrono::milliseconds(static_cast<long long>(s * 1000.0)); },
+         "Longest a job may run in this worker before it is stopped with an error (default 600; 0: no limit)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--log-level", options.log_level, "trace, debug, info, warn, error")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}));
 }

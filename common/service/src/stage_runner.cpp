@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <deque>
 #include <map>
 #include <stdexcept>
@@ -50,8 +51,17 @@ class CollectingStream final : public JobStream {
 
 }  // namespace
 
+void JobContext::check_time() const {
+  if (time_limit_.count() <= 0 || Clock::now() - started_ <= time_limit_) return;
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%g", static_cast<double>(time_limit_.count()) / 1000.0);
+  throw JobTimeLimit("job " + job_id_ + " ran longer than the job time limit (" + seconds +
+                     " s, --max-job-seconds) and was stopped");
+}
+
 void JobContext::publish_on(bus::Topic topic, std::string_view subkey, std::uint64_t seq, std::uint32_t kind, bool last,
                             std::string_view payload) {
+  check_time();
   const auto it = std::find_if(outputs_.begin(), outputs_.end(), [topic](const bus::Writer* w) { return w->topic() == topic; });
   if (it == outputs_.end()) throw std::logic_error("the stage does not publish on " + std::string(bus::topic_name(topic)));
   (*it)->write(job_id_, subkey, seq, kind, last, payload);
@@ -262,7 +272,7 @@ struct StageRunner::State {
     };
     std::vector<bus::Writer*> writers{&output};
     for (auto& w : other_outputs) writers.push_back(w.get());
-    a.context = std::make_unique<JobContext>(std::move(writers), job_id, progress);
+    a.context = std::make_unique<JobContext>(std::move(writers), job_id, progress, options.max_job_time);
     slot = &active.emplace(job_id, std::move(a)).first->second;
     spdlog::info("job {}: started", job_id);
     wire::JobStatus running;
@@ -283,9 +293,14 @@ struct StageRunner::State {
       const auto it = active.find(job_id);
       if (it == active.end() || !it->second.stream) continue;
       JobStream& stream = *it->second.stream;
+      const JobContext& context = *it->second.context;
       std::vector<bus::Envelope> samples = assembler.take_ready(job_id);
       if (!attempt(job_id, [&] {
-            for (bus::Envelope& s : samples) stream.sample(std::move(s));
+            context.check_time();  // also while it waits for input
+            for (bus::Envelope& s : samples) {
+              stream.sample(std::move(s));
+              context.check_time();
+            }
           }))
         continue;
       if (assembler.taken_all(job_id) && attempt(job_id, [&] { stream.finish(); })) done(job_id);

@@ -22,7 +22,7 @@ namespace ncbridge::stepnc_codec::detail {
 
 using namespace ncbridge::stepnc;
 
-constexpr std::uint32_t kVersion = 2;  // 2: REGION carries its projection
+constexpr std::uint32_t kVersion = 3;  // 2: REGION carries its projection; 3: B-splines, workpiece probing
 
 // S is T, possibly const: the same fields() serves encoding (const) and decoding.
 template <class S, class T>
@@ -38,6 +38,7 @@ template <> constexpr std::uint8_t enum_count<SlotEndType> = 5;
 template <> constexpr std::uint8_t enum_count<ToolBody> = 12;
 template <> constexpr std::uint8_t enum_count<Hand> = 3;
 template <> constexpr std::uint8_t enum_count<ToolReferencePoint> = 2;
+template <> constexpr std::uint8_t enum_count<KnotType> = 4;
 
 // ---- Geometry
 template <class Ar, Is<CartesianPoint> S> void fields(Ar& ar, S& v) { ar(v.x, v.y, v.z); }
@@ -48,6 +49,9 @@ template <class Ar, Is<Block> S> void fields(Ar& ar, S& v) { ar(v.position, v.x,
 template <class Ar, Is<Polyline> S> void fields(Ar& ar, S& v) { ar(v.points); }
 template <class Ar, Is<TrimmedCircle> S> void fields(Ar& ar, S& v) {
   ar(v.position, v.radius, v.trim_1_point, v.trim_1_parameter, v.trim_2_point, v.trim_2_parameter, v.sense_agreement);
+}
+template <class Ar, Is<BSplineCurve> S> void fields(Ar& ar, S& v) {
+  ar(v.degree, v.control_points, v.knot_multiplicities, v.knots, v.knot_spec, v.weights);
 }
 template <class Ar, Is<CompositeCurve> S> void fields(Ar& ar, S& v) { ar(v.segments); }
 template <class Ar, class Tag> void fields(Ar& ar, Ref<Tag>& v) { ar(v.index); }
@@ -168,6 +172,11 @@ template <class Ar, Is<MachiningWorkingstep> S> void fields(Ar& ar, S& v) {
   ar(v.its_id, v.its_secplane, v.its_feature, v.its_operation, v.source);
 }
 template <class Ar, Is<RapidMovement> S> void fields(Ar& ar, S& v) { ar(v.its_id, v.its_secplane, v.its_toolpath, v.source); }
+template <class Ar, Is<NcVariable> S> void fields(Ar& ar, S& v) { ar(v.its_name, v.initial_value); }
+template <class Ar, Is<WorkpieceProbing> S> void fields(Ar& ar, S& v) {
+  ar(v.its_id, v.its_secplane, v.measured_offset, v.start_position, v.its_direction, v.expected_value, v.its_probe,
+     v.source);
+}
 template <class Ar, Is<Workplan> S> void fields(Ar& ar, S& v) { ar(v.its_id, v.its_elements); }
 template <class Ar, Is<Workpiece> S> void fields(Ar& ar, S& v) {
   ar(v.its_id, v.global_tolerance, v.its_bounding_geometry, v.clamping_positions);

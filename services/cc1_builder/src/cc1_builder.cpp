@@ -155,9 +155,10 @@ struct Cc1Builder::State {
   std::uint32_t hole_cycle_id = 0;
   const setup::Tool* hole_tool = nullptr;
 
-  int workingstep_count = 0, rapid_count = 0, freeform_count = 0, hole_count = 0;
+  int workingstep_count = 0, rapid_count = 0, freeform_count = 0, hole_count = 0, probing_count = 0;
   std::optional<double> max_rapid_z, max_motion_z;
   bool warned_unknown_start = false, warned_frame_shift = false, warned_inverse_time = false;
+  bool warned_nurbs_plane = false;
   bool warned_rotation = false, warned_single_tool = false;
   bool frame_changed = false;
 
@@ -169,6 +170,14 @@ struct Cc1Builder::State {
     return loc;
   }
   void warn(const canonical::Source& s, std::string message) { warnings.push_back({where(s), std::move(message)}); }
+  // An error names file:line:column: a canonical call knows its block, not a word in it, so the
+  // block's first column (line 1 for a call the interpreter made before any block).
+  SourceLocation error_at(const canonical::Source& s) const {
+    SourceLocation loc = where(s);
+    if (loc.line == 0) loc.line = 1;
+    loc.column = 1;
+    return loc;
+  }
 
   // A warning a program may repeat on any number of lines: the first kRepeatedWarnings are
   // given, the rest counted and summed up at the end, so that warnings do not grow with the
@@ -179,7 +188,10 @@ struct Cc1Builder::State {
     int count = 0;
     canonical::Source last;
   };
-  Repeated probes{"probing move (G38) is not machining: left out of the workplan", "more probing moves (G38) left out of the workplan"};
+  Repeated probes_away{"probing away from the workpiece (G38.4, G38.5) has no ISO 14649 workingstep: left out of the workplan",
+                      "more probing moves away from the workpiece (G38.4, G38.5) left out of the workplan"};
+  Repeated probes_nowhere{"a probing move from an unknown position or without travel in X, Y or Z is left out of the workplan",
+                          "more probing moves from an unknown position or without travel left out of the workplan"};
   Repeated rigid_taps{"rigid tapping (G33.1) outside a canned cycle is left out of the workplan",
                       "more rigid tapping moves (G33.1) left out of the workplan"};
   void warn_repeated(Repeated& r, const canonical::Source& s) {
@@ -207,7 +219,7 @@ struct Cc1Builder::State {
     }
     const setup::Tool* tool = options.tools.find(number);
     if (tool == nullptr) {
-      throw InputError(where(s), number == 0 ? "cutting motion with no tool loaded (no T.. M6 before it)"
+      throw InputError(error_at(s), number == 0 ? "cutting motion with no tool loaded (no T.. M6 before it)"
                                              : "tool T" + std::to_string(number) + " is not in the tool list");
     }
     if (info) *info = tool;
@@ -398,10 +410,79 @@ struct Cc1Builder::State {
         std::visit(Overload{[&](const stepnc::Polyline& l) {
                               for (const auto& q : l.points) cut->min_z = std::min(cut->min_z, q.z);
                             },
-                            [&](const stepnc::TrimmedCircle& t) { cut->min_z = std::min(cut->min_z, lowest_z(t)); }},
+                            [&](const stepnc::TrimmedCircle& t) { cut->min_z = std::min(cut->min_z, lowest_z(t)); },
+                            [&](const stepnc::BSplineCurve&) {}},
                    curve.segments[i]);
       }
     }
+    moved_to(end);
+  }
+
+  // A NURBS in the XY plane at the current height (G5, G5.1, G5.2/G5.3): one B-spline segment.
+  void nurbs_feed(const canonical::Call& c, const canonical::NurbsFeed& f) {
+    if (f.control_points.empty()) throw InputError(error_at(c.source), "NURBS_FEED without control points");
+    const double z = m.position ? m.position->z : 0.0;
+    std::vector<stepnc::CartesianPoint> points;
+    std::vector<double> weights;
+    points.reserve(f.control_points.size());
+    for (const auto& q : f.control_points) {
+      points.push_back({m.axis_to_setup(0, q.x), m.axis_to_setup(1, q.y), z});
+      weights.push_back(q.weight);
+    }
+    stepnc::BSplineCurve spline;
+    try {
+      spline = nurbs_curve(points, weights, f.order);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(error_at(c.source), e.what());
+    }
+    if (m.plane != canonical::Plane::XY && !warned_nurbs_plane) {
+      warn(c.source, "a NURBS (G5, G5.1, G5.2) outside the XY plane: its control points are taken in XY, as LinuxCNC does");
+      warned_nurbs_plane = true;
+    }
+    const stepnc::CartesianPoint end = points.back();
+    if (prepare_feed(c)) {
+      auto& curve = cut->trajectories.back().basiccurve;
+      if (!(points.front() == *m.position)) append_line(curve, *m.position, points.front());
+      append_bspline(curve, std::move(spline));
+    }
+    moved_to(end);
+  }
+
+  // ---- probing
+  // G38.2/G38.3 (towards the workpiece until the probe touches): a WORKPIECE_PROBING of its own,
+  // from where the move starts along its direction; contact is expected anywhere up to the
+  // programmed end point, i.e. at half the travel +/- half the travel. The result goes to
+  // LinuxCNC's probe parameters. G38.4/G38.5 (away until contact is lost) have no ISO 14649
+  // counterpart: left out, with a warning.
+  void probe(const canonical::Call& c, const canonical::StraightProbe& p) {
+    break_all();
+    const stepnc::CartesianPoint end = point(c, p.end);
+    if ((p.probe_type & 2) != 0) {
+      warn_repeated(probes_away, c.source);
+      moved_to(end);
+      return;
+    }
+    const double dx = m.position ? end.x - m.position->x : 0.0;
+    const double dy = m.position ? end.y - m.position->y : 0.0;
+    const double dz = m.position ? end.z - m.position->z : 0.0;
+    const double travel = std::sqrt(dx * dx + dy * dy + dz * dz);
+    if (!m.position || !(travel > 0) || !std::isfinite(travel)) {
+      warn_repeated(probes_nowhere, c.source);
+      moved_to(end);
+      return;
+    }
+    stepnc::WorkpieceProbing w;
+    w.its_id = numbered("PROBING", ++probing_count);
+    w.start_position.location = *m.position;
+    w.its_direction = {dx / travel, dy / travel, dz / travel};
+    w.expected_value.theoretical_size = travel / 2;
+    w.expected_value.upper_limit = travel / 2;
+    w.expected_value.lower_limit = travel / 2;
+    const bool x_only = dy == 0 && dz == 0, y_only = dx == 0 && dz == 0, z_only = dx == 0 && dy == 0;
+    w.measured_offset.its_name = x_only ? "#5061" : y_only ? "#5062" : z_only ? "#5063" : "#5061..#5063";
+    w.its_probe = m.tool != 0 ? "T" + std::to_string(m.tool) : "PROBE";
+    extend(w.source, c.source);
+    finished(std::move(w));
     moved_to(end);
   }
 
@@ -503,11 +584,8 @@ struct Cc1Builder::State {
             [&](const canonical::SetFeedMode& f) { m.feed_mode = f.mode; },
             [&](const canonical::StraightFeed& f) { straight_feed(c, f); },
             [&](const canonical::ArcFeed& a) { arc_feed(c, a); },
-            [&](const canonical::StraightProbe& p) {
-              break_all();
-              warn_repeated(probes, c.source);
-              moved_to(point(c, p.end));
-            },
+            [&](const canonical::NurbsFeed& f) { nurbs_feed(c, f); },
+            [&](const canonical::StraightProbe& p) { probe(c, p); },
             [&](const canonical::RigidTap&) {
               break_all();
               warn_repeated(rigid_taps, c.source);
@@ -538,7 +616,8 @@ struct Cc1Builder::State {
 
   void finish() {
     break_all();
-    sum_up(probes);
+    sum_up(probes_away);
+    sum_up(probes_nowhere);
     sum_up(rigid_taps);
     const double secplane_z = options.security_plane_z.value_or(max_rapid_z.value_or(max_motion_z.value_or(0.0)));
     stepnc::Plane secplane;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace ncbridge::cc1_builder {
 
@@ -157,6 +159,36 @@ double lowest_z(const stepnc::TrimmedCircle& arc) {
   if (travelled < 0) travelled += 360.0;
   if (travelled > stepnc::sweep_degrees(arc)) return ends;
   return std::min(ends, arc.position.location.z - arc.radius * std::hypot(du, dv));
+}
+
+stepnc::BSplineCurve nurbs_curve(const std::vector<stepnc::CartesianPoint>& control_points,
+                                 const std::vector<double>& weights, int order) {
+  const auto count = static_cast<long long>(control_points.size());
+  if (order < 2 || count < order || weights.size() != control_points.size()) {
+    throw std::invalid_argument("a NURBS of order " + std::to_string(order) + " needs at least " +
+                                std::to_string(std::max(order, 2)) + " control points with a weight each, not " +
+                                std::to_string(count));
+  }
+  stepnc::BSplineCurve c;
+  c.degree = order - 1;
+  c.control_points = control_points;
+  // LinuxCNC's knots (knot_vector_creator): `order` zeros, 1 .. n - order + 1 once each, then
+  // `order` times n - order + 2, for control points 0..n.
+  const long long last = count - order + 1;
+  for (long long k = 0; k <= last; ++k) {
+    c.knots.push_back(static_cast<double>(k));
+    c.knot_multiplicities.push_back(k == 0 || k == last ? order : 1);
+  }
+  c.knot_spec = last == 1 ? stepnc::KnotType::PiecewiseBezierKnots : stepnc::KnotType::QuasiUniformKnots;
+  if (std::any_of(weights.begin(), weights.end(), [&](double w) { return w != weights.front(); })) c.weights = weights;
+  if (const std::string problem = stepnc::bspline_problem(c); !problem.empty()) {
+    throw std::invalid_argument("a NURBS that is no B-spline: " + problem);
+  }
+  return c;
+}
+
+void append_bspline(stepnc::CompositeCurve& curve, stepnc::BSplineCurve spline) {
+  curve.segments.emplace_back(std::move(spline));
 }
 
 }  // namespace ncbridge::cc1_builder

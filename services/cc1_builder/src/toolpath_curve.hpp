@@ -2,6 +2,8 @@
 // Appending moves to a cutter-location curve: lines extend the trailing POLYLINE, planar arcs
 // become TRIMMED_CURVEs on a CIRCLE, helical arcs a POLYLINE within a chord tolerance.
 #include "ncbridge/canonical/call.hpp"
+#include <vector>
+
 #include "ncbridge/stepnc/geometry.hpp"
 
 namespace ncbridge::cc1_builder {
@@ -25,6 +27,13 @@ void append_line(stepnc::CompositeCurve& curve, const stepnc::CartesianPoint& fr
 bool append_arc(stepnc::CompositeCurve& curve, const stepnc::CartesianPoint& from,
                 const stepnc::CartesianPoint& to, double centre_first, double centre_second,
                 PlaneAxes axes, int rotation, double chord_tolerance);
+
+// A NURBS_FEED in the XY plane at height `z` (setup frame, mm) from the given control points
+// (setup frame) as a B-spline curve with LinuxCNC's clamped uniform knots; rational only when
+// the weights differ. Throws std::invalid_argument when order and points make no curve.
+stepnc::BSplineCurve nurbs_curve(const std::vector<stepnc::CartesianPoint>& control_points,
+                                 const std::vector<double>& weights, int order);
+void append_bspline(stepnc::CompositeCurve& curve, stepnc::BSplineCurve spline);
 
 // The lowest Z an arc reaches (an arc out of the XY plane may dip below its ends).
 double lowest_z(const stepnc::TrimmedCircle& arc);

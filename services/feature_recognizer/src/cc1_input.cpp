@@ -56,10 +56,17 @@ std::uint16_t cycle_code(const stepnc::Operation& op) {
       op);
 }
 
+// B-spline toolpaths (G5, G5.1, G5.2 NURBS) are followed as chords this close to the curve.
+constexpr double kSplineChordTolerance = 0.001;  // mm
+
 void append_curve(const stepnc::CompositeCurve& curve, bool rapid, Point3& at, std::vector<Move>& moves) {
   for (const auto& segment : curve.segments) {
-    if (const auto* line = std::get_if<stepnc::Polyline>(&segment)) {
-      for (const auto& p : line->points) {
+    const auto* spline = std::get_if<stepnc::BSplineCurve>(&segment);
+    const std::vector<stepnc::CartesianPoint> spline_points =
+        spline ? stepnc::bspline_polyline(*spline, kSplineChordTolerance) : std::vector<stepnc::CartesianPoint>{};
+    const auto* line = std::get_if<stepnc::Polyline>(&segment);
+    if (line || spline) {
+      for (const auto& p : line ? line->points : spline_points) {
         const Point3 q = point(p);
         if (q == at) continue;
         Move m;
@@ -105,6 +112,22 @@ std::vector<ToolpathWorkingstep> workingsteps_from_cc1(const stepnc::Project& cc
       if (pending_rapids.empty()) pending_start = at;
       if (rapid->its_toolpath) {
         for (const auto& t : rapid->its_toolpath->its_list) append_curve(t.basiccurve, true, at, pending_rapids);
+      }
+      continue;
+    }
+    if (const auto* probing = std::get_if<stepnc::WorkpieceProbing>(&element)) {
+      // Not machining: the tool goes to the probe's start and then along its travel.
+      const auto& s = probing->start_position.location;
+      const auto& d = probing->its_direction;
+      const double travel = probing->expected_value.theoretical_size + probing->expected_value.upper_limit;
+      if (pending_rapids.empty()) pending_start = at;
+      for (const Point3& q : {point(s), Point3{s.x + d.x * travel, s.y + d.y * travel, s.z + d.z * travel}}) {
+        if (q == at) continue;
+        Move m;
+        m.kind = MoveKind::Rapid;
+        m.end = q;
+        pending_rapids.push_back(m);
+        at = q;
       }
       continue;
     }

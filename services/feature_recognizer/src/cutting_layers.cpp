@@ -11,13 +11,17 @@
 namespace ncbridge::feature_recognizer {
 namespace {
 
+// sqrt(dx² + dy²): as exact as std::hypot for coordinates in millimetres, without its care for
+// overflow, which costs more than the rest of these loops.
+double planar_distance(double dx, double dy) { return std::sqrt(dx * dx + dy * dy); }
+
 constexpr double kLevelTolerance = 1e-3;  // mm: two z values closer than this are one level
 
 bool finite(const Point3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 void append_arc(const Point3& from, const Move& move, double tolerance, CuttingPass& pass) {
-  const double r0 = std::hypot(from.x - move.center_x, from.y - move.center_y);
-  const double r1 = std::hypot(move.end.x - move.center_x, move.end.y - move.center_y);
+  const double r0 = planar_distance(from.x - move.center_x, from.y - move.center_y);
+  const double r1 = planar_distance(move.end.x - move.center_x, move.end.y - move.center_y);
   const double a0 = std::atan2(from.y - move.center_y, from.x - move.center_x);
   const double a1 = std::atan2(move.end.y - move.center_y, move.end.x - move.center_x);
   const double two_pi = 2 * std::numbers::pi;
@@ -39,12 +43,22 @@ void append_arc(const Point3& from, const Move& move, double tolerance, CuttingP
 }
 
 // A pass ends at a rapid or a tool change; it runs on across workingsteps otherwise (an
-// upstream segmenter may split a plunge from the cut it starts, at a feed change).
-std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>& workingsteps, double tolerance) {
-  std::vector<CuttingPass> passes;
+// upstream segmenter may split a plunge from the cut it starts, at a feed change). Each pass is
+// handed on as it ends, so that only one is held at a time.
+template <typename OnPass>
+void cut_into_passes(const std::vector<ToolpathWorkingstep>& workingsteps, double tolerance, OnPass on_pass) {
   CuttingPass current;
+  std::size_t sequence = 0;
   auto flush = [&] {
-    if (current.points.size() >= 2) passes.push_back(std::move(current));
+    if (current.points.size() >= 2) {
+      current.sequence = sequence++;
+      current.z_min = current.z_max = current.points.front().z;
+      for (const auto& p : current.points) {
+        current.z_min = std::min(current.z_min, p.z);
+        current.z_max = std::max(current.z_max, p.z);
+      }
+      on_pass(std::move(current));
+    }
     current = CuttingPass{};
   };
   Point3 at;
@@ -56,7 +70,7 @@ std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>&
     at = ws.start;
     for (const auto& move : ws.moves) {
       if (!finite(move.end) || !std::isfinite(move.center_x) || !std::isfinite(move.center_y)) {
-        throw InputError({"", move.source_line, 0}, "workingstep " + std::to_string(w) +
+        throw InputError({"", move.source_line, 1}, "workingstep " + std::to_string(w) +
                                                         ": a move has a coordinate that is not a finite number");
       }
       if (move.kind == MoveKind::Rapid) {
@@ -67,28 +81,21 @@ std::vector<CuttingPass> cut_into_passes(const std::vector<ToolpathWorkingstep>&
       if (current.points.empty()) {
         current.workingstep = w;
         current.points.push_back(at);
-        current.point_workingsteps.push_back(w);
+      }
+      if (current.workingstep_runs.empty() || current.workingstep_runs.back().second != w) {
+        // The points this move adds (and the pass's first point) belong to workingstep w.
+        current.workingstep_runs.emplace_back(current.workingstep_runs.empty() ? 0 : current.points.size(), w);
       }
       if (move.kind == MoveKind::Arc) {
         append_arc(at, move, tolerance, current);
       } else {
-        current.xy_length += std::hypot(move.end.x - at.x, move.end.y - at.y);
+        current.xy_length += planar_distance(move.end.x - at.x, move.end.y - at.y);
         current.points.push_back(move.end);
       }
-      current.point_workingsteps.resize(current.points.size(), w);
       at = move.end;
     }
   }
   flush();
-  for (std::size_t i = 0; i < passes.size(); ++i) passes[i].sequence = i;
-  for (auto& pass : passes) {
-    pass.z_min = pass.z_max = pass.points.front().z;
-    for (const auto& p : pass.points) {
-      pass.z_min = std::min(pass.z_min, p.z);
-      pass.z_max = std::max(pass.z_max, p.z);
-    }
-  }
-  return passes;
 }
 
 // A pass whose z goes up and down many times while x and y move is surface machining.
@@ -98,7 +105,7 @@ bool is_freeform(const CuttingPass& pass) {
   for (std::size_t i = 1; i < pass.points.size(); ++i) {
     const auto& a = pass.points[i - 1];
     const auto& b = pass.points[i];
-    const double xy = std::hypot(b.x - a.x, b.y - a.y), dz = b.z - a.z;
+    const double xy = planar_distance(b.x - a.x, b.y - a.y), dz = b.z - a.z;
     total += xy;
     if (xy > 1e-6 && std::abs(dz) > 1e-4) sloped += xy;
     if (std::abs(dz) > 1e-4) {
@@ -114,10 +121,7 @@ Layer make_layer(const CuttingPass& pass, const ToolpathWorkingstep& ws, std::ve
                  std::size_t first_point) {
   Layer layer;
   // The workingsteps of the points after the first (the first is where the cut starts from).
-  for (std::size_t i = first_point + 1; i < first_point + path.size() && i < pass.points.size(); ++i) {
-    const auto w = pass.point_workingsteps[i];
-    if (layer.workingsteps.empty() || layer.workingsteps.back() != w) layer.workingsteps.push_back(w);
-  }
+  layer.workingsteps = pass.workingsteps_of(first_point + 1, std::min(first_point + path.size(), pass.points.size()));
   if (layer.workingsteps.empty()) layer.workingsteps = {pass.workingstep};
   layer.sequence = pass.sequence;
   layer.tool = ws.tool;
@@ -135,7 +139,7 @@ Layer make_layer(const CuttingPass& pass, const ToolpathWorkingstep& ws, std::ve
 double xy_length(const Layer& layer) {
   double length = 0;
   for (const auto& path : layer.paths) {
-    for (std::size_t i = 1; i < path.size(); ++i) length += std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
+    for (std::size_t i = 1; i < path.size(); ++i) length += planar_distance(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
   }
   return length;
 }
@@ -194,7 +198,7 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
   for (std::size_t i = 1; i < pass.points.size(); ++i) {
     const auto& a = pass.points[i - 1];
     const auto& b = pass.points[i];
-    const bool horizontal = std::abs(b.z - a.z) < kLevelTolerance && std::hypot(b.x - a.x, b.y - a.y) > 0;
+    const bool horizontal = std::abs(b.z - a.z) < kLevelTolerance && planar_distance(b.x - a.x, b.y - a.y) > 0;
     if (horizontal) {
       if (piece_has_level && std::abs(a.z - piece_level) > kLevelTolerance) {
         // A new level begins: close the current piece at its last point on the old level.
@@ -217,10 +221,8 @@ std::vector<Layer> slice_pass(const CuttingPass& pass, const ToolpathWorkingstep
     if (!piece_has_level && !out.empty() && piece.back().z >= out.back().z - kLevelTolerance) {
       auto& last = out.back().paths.back();
       last.insert(last.end(), piece.begin() + 1, piece.end());
-      for (std::size_t i = piece_first + 1; i < pass.points.size(); ++i) {
-        if (out.back().workingsteps.back() < pass.point_workingsteps[i]) {
-          out.back().workingsteps.push_back(pass.point_workingsteps[i]);
-        }
+      for (auto w : pass.workingsteps_of(piece_first + 1, pass.points.size())) {
+        if (out.back().workingsteps.back() < w) out.back().workingsteps.push_back(w);
       }
       out.back().z_top = std::max(out.back().z_top, piece.back().z);
     } else {
@@ -251,9 +253,21 @@ Box2 path_box(const std::vector<std::vector<Point3>>& paths, double grow) {
 
 bool CuttingPass::z_only() const {
   for (const auto& p : points) {
-    if (std::hypot(p.x - points.front().x, p.y - points.front().y) > 1e-3) return false;
+    if (planar_distance(p.x - points.front().x, p.y - points.front().y) > 1e-3) return false;
   }
   return true;
+}
+
+std::vector<std::size_t> CuttingPass::workingsteps_of(std::size_t first, std::size_t last) const {
+  std::vector<std::size_t> out;
+  for (std::size_t r = 0; r < workingstep_runs.size(); ++r) {
+    const std::size_t begin = workingstep_runs[r].first;
+    const std::size_t end = r + 1 < workingstep_runs.size() ? workingstep_runs[r + 1].first : points.size();
+    if (begin < last && first < end && (out.empty() || out.back() != workingstep_runs[r].second)) {
+      out.push_back(workingstep_runs[r].second);
+    }
+  }
+  return out;
 }
 
 std::vector<std::vector<Point2>> Layer::xy_paths() const {
@@ -274,7 +288,7 @@ bool is_hole_making_tool(setup::ToolType type) {
 }
 
 CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkingstep>& workingsteps,
-                                                double chord_tolerance) {
+                                                double chord_tolerance, const std::function<void()>& checkpoint) {
   CutterLocationAnalysis out;
   // Layers as they are made; a layer merged into a later one leaves a dead slot (kept so that the
   // run's index stays valid), removed at the end.
@@ -282,11 +296,12 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
   std::vector<char> dead;
   std::size_t run_begin = 0;  // the first layer of the current run of one tool at one level
   BoxIndex run_index(25.0);   // the run's layers by their extents
-  for (const auto& pass : cut_into_passes(workingsteps, chord_tolerance)) {
+  cut_into_passes(workingsteps, chord_tolerance, [&](CuttingPass&& pass) {
+    if (checkpoint) checkpoint();
     const auto& ws = workingsteps[pass.workingstep];
     if (pass.z_only() || (is_hole_making_tool(ws.tool.type) && ws.cycle)) {
       if (pass.z_min >= pass.points.front().z - kLevelTolerance) {
-        continue;  // a feed retract out of a hole cuts nothing new
+        return;  // a feed retract out of a hole cuts nothing new
       }
       DrillPass d;
       d.workingstep = pass.workingstep;
@@ -300,10 +315,11 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
       d.spindle_rpm = ws.spindle_rpm;
       if (ws.cycle) d.at = {ws.cycle->x, ws.cycle->y};
       out.drill_passes.push_back(std::move(d));
-      continue;
+      return;
     }
     if (ws.tool.diameter <= 0) {
-      throw InputError({"", 0, 0}, "workingstep " + std::to_string(pass.workingstep) + ": tool T" +
+      const std::uint32_t line = ws.moves.empty() ? 0 : ws.moves.front().source_line;
+      throw InputError({"", line, 1}, "workingstep " + std::to_string(pass.workingstep) + ": tool T" +
                                        std::to_string(ws.tool.number) +
                                        " has no diameter, so its cutting area is unknown");
     }
@@ -344,7 +360,7 @@ CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkin
         }
       }
     }
-  }
+  });
   for (std::size_t i = 0; i < layers.size(); ++i) {
     if (dead[i]) continue;
     auto& w = layers[i].workingsteps;

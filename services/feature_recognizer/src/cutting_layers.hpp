@@ -3,6 +3,7 @@
 // at every rapid), drilling passes told from milling ones, and milling passes sliced into
 // layers (one cutting level each, the plunges and ramps that reach it included).
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "ncbridge/feature_recognizer/toolpath.hpp"
@@ -13,12 +14,15 @@ namespace ncbridge::feature_recognizer {
 // Feed moves of one workingstep between two rapids, arcs as chords within the tolerance.
 struct CuttingPass {
   std::size_t workingstep = 0;  // the first; a pass runs on across workingsteps with no rapid between
-  std::vector<std::size_t> point_workingsteps;  // parallel to points: the workingstep of each
+  // The workingstep of each point, as runs: (first point, workingstep), ascending.
+  std::vector<std::pair<std::size_t, std::size_t>> workingstep_runs;
   std::size_t sequence = 0;     // position among all passes of the program
   std::vector<Point3> points;   // the polyline, first point = where the feed motion starts
   double xy_length = 0;
   double z_min = 0, z_max = 0;
   bool z_only() const;          // a plunge: no motion in XY beyond 1 µm
+  // The workingsteps of the points [first, last), ascending, each once.
+  std::vector<std::size_t> workingsteps_of(std::size_t first, std::size_t last) const;
 };
 
 // One cutting level of one tool: the paths cut at that level, in order.
@@ -31,6 +35,7 @@ struct Layer {
   std::vector<std::vector<Point3>> paths;  // one per pass piece
   double feed = 0, spindle_rpm = 0;
   bool freeform = false;                   // x, y and z vary together (3D surface machining)
+  bool coarse = false;                     // beyond the work limit: no swept area (its extent stands for it)
   Region area;                             // the tool's swept region (filled in by the caller)
   Box2 extent;                             // bounding box of the swept region
   std::vector<std::vector<Point2>> xy_paths() const;
@@ -51,8 +56,9 @@ struct CutterLocationAnalysis {
   std::vector<Layer> layers;  // milling layers in machining order
 };
 
+// `checkpoint` (if set) is called after each cutting pass.
 CutterLocationAnalysis analyse_cutter_locations(const std::vector<ToolpathWorkingstep>& workingsteps,
-                                                double chord_tolerance);
+                                                double chord_tolerance, const std::function<void()>& checkpoint = {});
 
 // True for tools that only cut along their axis (drills, reamers, taps, boring bars).
 bool is_hole_making_tool(setup::ToolType type);

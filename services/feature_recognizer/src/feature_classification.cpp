@@ -68,8 +68,11 @@ double outer_perimeter(const Region& r) {
   return p;
 }
 
+// The strategies already found for some layers (by index), so that none is analysed twice.
+using KnownStrategies = std::vector<std::pair<std::size_t, StrategyAnalysis>>;
+
 std::vector<RecognizedOperation> make_operations(const MillingGroup& group, const std::vector<Layer>& layers,
-                                                 FeatureType type) {
+                                                 FeatureType type, const KnownStrategies& known = {}) {
   std::vector<RecognizedOperation> ops;
   const auto& last_op = group.operations.back();
   Region last_fill;
@@ -107,7 +110,9 @@ std::vector<RecognizedOperation> make_operations(const MillingGroup& group, cons
     levels.erase(std::unique(levels.begin(), levels.end(), [](double a, double b) { return std::abs(a - b) < 1e-3; }),
                  levels.end());
     for (std::size_t j = 1; j < levels.size(); ++j) op.axial_depth = std::max(op.axial_depth, levels[j] - levels[j - 1]);
-    const auto strategy = analyse_strategy(*deepest);
+    const std::size_t deepest_index = static_cast<std::size_t>(deepest - layers.data());
+    const auto found = std::find_if(known.begin(), known.end(), [&](const auto& known_layer) { return known_layer.first == deepest_index; });
+    const auto strategy = found != known.end() ? found->second : analyse_strategy(*deepest);
     op.strategy = strategy.strategy;
     op.radial_depth = strategy.stepover;
     op.feed = deepest->feed;
@@ -165,6 +170,24 @@ Ring outer_ring(const Region& r) {
   return best;
 }
 
+// Groups by machining order, the latest first (their index order is not machining order:
+// nested step-downs split off are appended).
+void latest_first(std::vector<std::size_t>& indices, const std::vector<MillingGroup>& groups) {
+  std::stable_sort(indices.begin(), indices.end(),
+                   [&](std::size_t a, std::size_t b) { return groups[a].sequence > groups[b].sequence; });
+}
+
+// The ring (|outer| area minus |hole| area) by the shoelace formula, either orientation.
+double ring_area(const Ring& ring) {
+  double twice = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const auto& a = ring[i];
+    const auto& b = ring[(i + 1) % ring.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return std::abs(twice) / 2;
+}
+
 // A boss left standing: the largest area the group's cut surrounds without cutting it, when no
 // other group cuts into it either (so material stands there), and the cut does not go through
 // (a core inside a through cut falls out). Its outside profile is what the group machined.
@@ -174,70 +197,111 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
                                       const std::vector<Layer>& layers, const PartEnvelope& part, double tool_diameter) {
   const auto& group = groups[group_index];
   if (group.floor <= part.bottom_z + 1e-3) return std::nullopt;
-  std::optional<Region> island;
+  const Ring* island_ring = nullptr;
   double island_area = 0, ring_width = 0;
-  for (const auto& pwh : group.area.polygons()) {
+  const auto polygons = group.area.polygons();
+  for (const auto& pwh : polygons) {
     for (const auto& hole : pwh.holes) {
-      Region r = Region::polygon(hole);
-      const double a = r.area();
+      const double a = ring_area(hole);
       if (a <= island_area) continue;
-      const double ring_area = Region::polygon(pwh.outer).area() - a;
-      ring_width = ring_area / ((perimeter(pwh.outer) + perimeter(hole)) / 2);
-      island_area = a, island = std::move(r);
+      const double ring_area_around = ring_area(pwh.outer) - a;
+      ring_width = ring_area_around / ((perimeter(pwh.outer) + perimeter(hole)) / 2);
+      island_area = a, island_ring = &hole;
     }
   }
-  if (!island || island_area < 1.0 || ring_width > 1.5 * tool_diameter) return std::nullopt;
+  if (!island_ring || island_area < 1.0 || ring_width > 1.5 * tool_diameter) return std::nullopt;
+  const Region island = Region::polygon(*island_ring);
+  // Cuts above the group's highest level (a face over the boss) leave it standing; a cut into the
+  // island (of the latest kNearFeatureLimit near it) means no boss stands there.
+  double highest = group.floor;
+  for (auto i : group.layers()) highest = std::max(highest, layers[i].z);
+  const auto box = island.bbox();
+  std::vector<std::size_t> into;
+  for (auto g : part.groups_by_box.candidates(*box)) {
+    if (g == group_index || groups[g].floor > highest + 1e-3 || !boxes_overlap(box, groups[g].area.bbox())) continue;
+    into.push_back(g);
+  }
+  latest_first(into, groups);
+  if (into.size() > kNearFeatureLimit) into.resize(kNearFeatureLimit);
+  for (auto g : into) {
+    if (island.intersected(groups[g].area).area() > 0.05 * island.area()) return std::nullopt;
+  }
   // Around a boss the material is cleared too (or it is the part's edge); a ring cut into solid
   // material is a hole bored by circular interpolation, its core a chip.
   Region ring_fill;
-  for (const auto& pwh : group.area.polygons()) {
-    if (Region::polygon(pwh.outer).intersected(*island).area() > 0) ring_fill = Region::polygon(pwh.outer);
+  for (const auto& pwh : polygons) {
+    const Region outer = Region::polygon(pwh.outer);
+    if (outer.intersected(island).area() > 0) ring_fill = outer;
   }
   const Region outside = boundary_band(ring_fill, 0.25 * tool_diameter, 0.01).minus(ring_fill);
   Region cleared = outside.minus(part.outline);
-  for (std::size_t g = 0; g < groups.size(); ++g) {
-    if (g != group_index && boxes_overlap(outside.bbox(), groups[g].area.bbox())) cleared = cleared.united(outside.intersected(groups[g].area));
+  std::vector<std::size_t> around;
+  if (const auto outside_box = outside.bbox()) {
+    for (auto g : part.groups_by_box.candidates(*outside_box)) {
+      if (g != group_index && boxes_overlap(outside_box, groups[g].area.bbox())) around.push_back(g);
+    }
   }
+  latest_first(around, groups);
+  if (around.size() > kNearFeatureLimit) around.resize(kNearFeatureLimit);
+  std::sort(around.begin(), around.end());
+  for (auto g : around) cleared = cleared.united(outside.intersected(groups[g].area));
   if (cleared.area() < 0.5 * outside.area()) return std::nullopt;
-  // Cuts above the group's highest level (a face over the boss) leave it standing.
-  double highest = group.floor;
-  for (auto i : group.layers()) highest = std::max(highest, layers[i].z);
-  const auto box = island->bbox();
-  for (std::size_t g = 0; g < groups.size(); ++g) {
-    if (g == group_index || groups[g].floor > highest + 1e-3 || !boxes_overlap(box, groups[g].area.bbox())) continue;
-    if (island->intersected(groups[g].area).area() > 0.05 * island->area()) return std::nullopt;
-  }
   return island;
 }
 
-// The length of each side of the part (x-, x+, y-, y+) where material still stands above
-// `floor` when the group is cut: earlier groups cutting to that floor or deeper have removed the
-// rest. A step runs along most of what stands there.
-// What earlier features near the group cut to its floor or deeper: air at its level.
-Region removed_before(const MillingGroup& group, const std::vector<MillingGroup>& groups, const PartEnvelope& part) {
-  Region removed;
-  auto near = group.area.bbox();
-  if (!near) return removed;
-  near->xmin -= 1, near->ymin -= 1, near->xmax += 1, near->ymax += 1;
-  for (auto index : part.groups_by_box.candidates(*near)) {
-    const auto& g = groups[index];
-    if (g.sequence < group.sequence && g.floor <= group.floor + 1e-3 && boxes_overlap(near, g.area.bbox())) {
-      removed = removed.united(g.area);
+// What earlier features near a group cut to its floor or deeper (air at its level): the latest
+// kNearFeatureLimit of them (bounded exact work). Kept as the features' areas, not their union:
+// the questions asked of it meet each area with something small (a band along an edge, a strip
+// along a side, a footprint), where uniting the areas first would resolve every crossing among
+// them.
+class RemovedBefore {
+ public:
+  RemovedBefore() = default;  // nothing
+  RemovedBefore(const MillingGroup& group, const std::vector<MillingGroup>& groups, const PartEnvelope& part) {
+    auto near = group.area.bbox();
+    if (!near) return;
+    near->xmin -= 1, near->ymin -= 1, near->xmax += 1, near->ymax += 1;
+    std::vector<std::size_t> earlier;
+    for (auto index : part.groups_by_box.candidates(*near)) {
+      const auto& g = groups[index];
+      if (g.sequence < group.sequence && g.floor <= group.floor + 1e-3 && boxes_overlap(near, g.area.bbox())) {
+        earlier.push_back(index);
+      }
     }
+    latest_first(earlier, groups);
+    if (earlier.size() > kNearFeatureLimit) earlier.resize(kNearFeatureLimit);
+    std::sort(earlier.begin(), earlier.end());
+    for (auto index : earlier) areas_.push_back(groups[index].area);
   }
-  return removed;
-}
 
-std::array<double, 4> standing_side_lengths(const Region& removed, const PartEnvelope& part) {
+  bool empty() const { return areas_.empty(); }
+
+  // `region` less what was removed.
+  Region left_of(Region region) const {
+    for (const auto& a : areas_) region = region.minus(a);
+    return region;
+  }
+
+  // The part of `region` that was removed.
+  Region within(const Region& region) const {
+    std::vector<Region> parts;
+    for (const auto& a : areas_) parts.push_back(region.intersected(a));
+    return Region::union_all(parts);
+  }
+
+ private:
+  std::vector<Region> areas_;
+};
+
+// The length of a side of the part (0 to 3: x-, x+, y-, y+) where material still stands at the
+// group's floor: earlier groups cutting to that floor or deeper have removed the rest. A step
+// runs along most of what stands there.
+double standing_side_length(int side, const RemovedBefore& removed, const PartEnvelope& part) {
   constexpr double kStrip = 1.0;
   const Box2& e = part.box;
   const Box2 strips[4] = {{e.xmin, e.ymin, e.xmin + kStrip, e.ymax}, {e.xmax - kStrip, e.ymin, e.xmax, e.ymax},
                           {e.xmin, e.ymin, e.xmax, e.ymin + kStrip}, {e.xmin, e.ymax - kStrip, e.xmax, e.ymax}};
-  std::array<double, 4> out{};
-  for (int s = 0; s < 4; ++s) {
-    out[s] = Region::rectangle(strips[s]).intersected(part.outline).minus(removed).area() / kStrip;
-  }
-  return out;
+  return removed.left_of(Region::rectangle(strips[side]).intersected(part.outline)).area() / kStrip;
 }
 
 // The straight centre line of a slot whose area is the rectangle `rect`.
@@ -246,6 +310,31 @@ std::vector<Point2> rectangle_course(const OrientedRectangle& rect, double end_i
   const double half = rect.length / 2 - end_inset;
   return {{rect.center.x - half * std::cos(a), rect.center.y - half * std::sin(a)},
           {rect.center.x + half * std::cos(a), rect.center.y + half * std::sin(a)}};
+}
+
+// A group of coarse layers (beyond the work limit): a `region` of the box its paths sweep,
+// from its floor, with one operation per layer.
+ClassifiedFeature coarse_feature(const MillingGroup& group, const std::vector<Layer>& layers) {
+  ClassifiedFeature out;
+  out.order = group.sequence;
+  auto& f = out.feature;
+  f.type = FeatureType::Region;
+  f.approximate = true;
+  f.bottom = BottomCondition::General;
+  f.bottom_z = group.floor;
+  Box2 box{1e300, 1e300, -1e300, -1e300};
+  for (auto i : group.layers()) {
+    const auto& e = layers[i].extent;
+    box = {std::min(box.xmin, e.xmin), std::min(box.ymin, e.ymin), std::max(box.xmax, e.xmax), std::max(box.ymax, e.ymax)};
+  }
+  f.x = (box.xmin + box.xmax) / 2, f.y = (box.ymin + box.ymax) / 2;
+  f.profile.shape = ProfileShape::GeneralClosed;
+  f.profile.outline = {{box.xmin, box.ymin}, {box.xmax, box.ymin}, {box.xmax, box.ymax}, {box.xmin, box.ymax}};
+  f.profile.length = std::max(box.width(), box.height());
+  f.profile.width = std::min(box.width(), box.height());
+  f.profile.angle_deg = box.width() >= box.height() ? 0 : 90;
+  f.operations = make_operations(group, layers, f.type);
+  return out;
 }
 
 }  // namespace
@@ -260,7 +349,7 @@ PartEnvelope find_part_envelope(const std::vector<MillingGroup>& groups, const s
   std::optional<double> profile_floor;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     if (auto box = groups[g].area.bbox()) part.groups_by_box.insert(g, *box);
-    if (groups[g].freeform) continue;
+    if (groups[g].freeform || groups[g].coarse) continue;
     if (auto inside = surrounded_part(groups[g], stock_rect)) {
       part.outline = part.outline.intersected(*inside);
       part.outside_profiles.push_back(g);
@@ -277,12 +366,15 @@ PartEnvelope find_part_envelope(const std::vector<MillingGroup>& groups, const s
 }
 
 std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const std::vector<MillingGroup>& groups,
-                                                const std::vector<Layer>& layers, const PartEnvelope& part) {
+                                                const std::vector<Layer>& layers, const PartEnvelope& part,
+                                                WorkBudget& budget) {
   const auto& group = groups[group_index];
   ClassifiedFeature out;
   out.order = group.sequence;
   auto& f = out.feature;
   f.bottom_z = group.floor;
+  if (group.coarse) return coarse_feature(group, layers);
+  const WorkCharge charge(budget);
   const bool is_profile = std::find(part.outside_profiles.begin(), part.outside_profiles.end(), group_index) !=
                           part.outside_profiles.end();
   const auto& first_tool = layers[group.operations.front().layers.front()].tool;
@@ -318,9 +410,10 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   f.bottom = group.floor <= part.bottom_z + 1e-3 ? BottomCondition::Through : BottomCondition::Planar;
   if (f.bottom == BottomCondition::Through) f.bottom_z = part.bottom_z;  // CAM cuts a little below
 
+  KnownStrategies known;
   auto finish = [&](FeatureType type) {
     f.type = type;
-    f.operations = make_operations(group, layers, type);
+    f.operations = make_operations(group, layers, type, known);
     return out;
   };
 
@@ -344,7 +437,10 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   }
 
   std::vector<StrategyAnalysis> strategies;
-  for (auto i : group.layers()) strategies.push_back(analyse_strategy(layers[i]));
+  for (auto i : group.layers()) {
+    strategies.push_back(analyse_strategy(layers[i]));
+    known.emplace_back(i, strategies.back());
+  }
   // A hole milled by interpolation: in every layer circles about one centre, one radius or a
   // helix at each of several radii (a circular pocket is cleared by flat concentric circles).
   const bool all_circles = std::all_of(strategies.begin(), strategies.end(), [&](const auto& s) {
@@ -355,8 +451,11 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   const bool all_helical = std::all_of(strategies.begin(), strategies.end(), [](const auto& s) { return s.helical; });
 
   // A helix leaving a core is a hole (CAM does not leave pins standing in a blind hole).
-  auto island = all_circles && all_helical ? std::nullopt
-                                           : standing_island(group_index, groups, layers, part, first_tool.diameter);
+  const bool compare = budget.available();  // with other features, within the work limit
+  if (!compare) f.approximate = true;
+  auto island = (all_circles && all_helical) || !compare
+                    ? std::nullopt
+                    : standing_island(group_index, groups, layers, part, first_tool.diameter);
   if (island) {
     f.type = FeatureType::GeneralOutsideProfile;
     const Ring boss = outer_ring(*island);
@@ -365,19 +464,20 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
     f.x = rect.center.x, f.y = rect.center.y;
     f.bottom = BottomCondition::Planar;
     out.footprint = *island;  // its top is the boss's
-    f.operations = make_operations(group, layers, f.type);
+    f.operations = make_operations(group, layers, f.type, known);
     return out;
   }
 
   auto contact = open_contact(group.area, part);
   // Open also where the cut's outer edge runs into what earlier features cleared deeper (an open
   // pocket on an upper level opening onto a step): a band just inside the edge, in that air.
-  const Region removed = removed_before(group, groups, part);
+  const RemovedBefore removed = compare ? RemovedBefore(group, groups, part) : RemovedBefore();
   if (!removed.empty()) {
-    Region outer;
-    for (const auto& pwh : group.area.polygons()) outer = outer.united(Region::polygon(pwh.outer));
+    std::vector<Region> outers;
+    for (const auto& pwh : group.area.polygons()) outers.push_back(Region::polygon(pwh.outer));
+    const Region outer = Region::union_all(outers);
     const Region edge = boundary_band(outer, kOpenBandWidth, 0.01).intersected(outer);
-    for (const auto& piece : edge.intersected(removed).components()) {
+    for (const auto& piece : removed.within(edge).components()) {
       if (piece.area() >= 0.05 * kOpenBandWidth) contact.pieces.push_back(*piece.bbox());
     }
   }
@@ -415,7 +515,7 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   }
 
   f.open_sides = contact.sides;
-  const Region standing_footprint = removed.empty() ? footprint : footprint.minus(removed);
+  const Region standing_footprint = removed.left_of(footprint);
   const Point2 open_center = standing_footprint.area() > 0.05 * footprint.area() ? box_center(*standing_footprint.bbox()) : fcenter;
   f.x = open_center.x, f.y = open_center.y;
   f.profile.outline = outline;
@@ -424,9 +524,10 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   f.profile.angle_deg = rect.angle_deg;
   f.profile.shape = ProfileShape::GeneralClosed;
 
-  const auto standing = standing_side_lengths(removed, part);
   for (int s = 0; s < 4; ++s) {
-    if (standing[s] > 1.0 && contact.coverage[s] >= 0.9 * standing[s]) {
+    if (contact.coverage[s] <= 0.9) continue;  // cannot be 90 % of more than 1 mm standing
+    const double standing = standing_side_length(s, removed, part);
+    if (standing > 1.0 && contact.coverage[s] >= 0.9 * standing) {
       f.bottom = BottomCondition::None;
       return finish(FeatureType::Step);
     }

@@ -9,6 +9,7 @@
 
 #include "box_index.hpp"
 #include "feature_grouping.hpp"
+#include "work_budget.hpp"
 #include "ncbridge/setup/stock.hpp"
 
 namespace ncbridge::feature_recognizer {
@@ -39,8 +40,11 @@ struct ClassifiedFeature {
   std::size_t order = 0;  // machining order: the sequence number of its first pass
 };
 
-// nullopt when the group cut only outside the part (air).
+// nullopt when the group cut only outside the part (air). The comparisons with other features
+// (what earlier ones removed at its edge, the island test) charge `budget`; past it they are
+// left out and the feature is marked approximate. A coarse group is a `region` of its box.
 std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const std::vector<MillingGroup>& groups,
-                                                const std::vector<Layer>& layers, const PartEnvelope& part);
+                                                const std::vector<Layer>& layers, const PartEnvelope& part,
+                                                WorkBudget& budget);
 
 }  // namespace ncbridge::feature_recognizer

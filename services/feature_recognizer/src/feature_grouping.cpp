@@ -12,7 +12,8 @@ std::vector<std::size_t> MillingGroup::layers() const {
   return out;
 }
 
-std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance) {
+std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance, WorkBudget& budget,
+                                       const std::function<void()>& checkpoint) {
   std::vector<MillingGroup> groups;
   std::optional<std::size_t> last_group;  // the group the previous layer went to
   std::vector<Region> fills;
@@ -42,7 +43,25 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
   };
 
   for (std::size_t i = 0; i < layers.size(); ++i) {
+    if (checkpoint) checkpoint();
     const auto& layer = layers[i];
+    if (layer.coarse) {
+      if (groups.empty() || !groups.back().coarse || layers[groups.back().operations.back().layers.back()].tool.number != layer.tool.number) {
+        MillingGroup group;
+        group.coarse = true;
+        group.floor = layer.z;
+        group.first_workingstep = layer.workingsteps.front();
+        group.sequence = layer.sequence;
+        groups.push_back(std::move(group));
+        group_boxes.emplace_back();
+        group_areas.push_back(0);
+      }
+      auto& group = groups.back();
+      group.operations.push_back({{i}, layer.tool.number});
+      group.floor = std::min(group.floor, layer.z);
+      last_group.reset();
+      continue;
+    }
     auto add = [&](std::size_t g, bool new_operation) {
       auto& group = groups[g];
       if (new_operation || group.operations.empty()) group.operations.push_back({{}, layer.tool.number});
@@ -57,12 +76,14 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
     };
     // Continuing the feature the previous layer cut, with the same tool: a step-down (deeper)
     // or, going back up, a new operation on the same region.
-    if (last_group) {
+    // Each exact comparison is charged; past the budget a layer starts its own feature.
+    auto overlaps = [&](std::size_t g) { return overlap_ratio(fills[i], groups[g].filled) >= kSameFeatureOverlap; };
+    const WorkCharge charge(budget);
+    if (last_group && budget.available()) {
       auto& group = groups[*last_group];
       const auto& prev = layers[group.operations.back().layers.back()];
       if (prev.tool.number == layer.tool.number && prev.freeform == layer.freeform &&
-          may_match(i, *last_group) &&
-          overlap_ratio(fills[i], group.filled) >= kSameFeatureOverlap) {
+          may_match(i, *last_group) && overlaps(*last_group)) {
         add(*last_group, layer.z > prev.z + 1e-3);
         continue;
       }
@@ -71,13 +92,15 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
     // the finishing allowance.
     bool attached = false;
     const auto near = fill_boxes[i] ? group_index.candidates(*fill_boxes[i]) : std::vector<std::size_t>{};
-    for (auto it = near.rbegin(); it != near.rend(); ++it) {
+    std::size_t compared = 0;
+    for (auto it = near.rbegin(); it != near.rend() && compared < kNearFeatureLimit && budget.available(); ++it) {
       const std::size_t g = *it;
       auto& group = groups[g];
       if (group.freeform != layer.freeform) continue;
       if (layer.z < group.floor - finishing_allowance) continue;
       if (!may_match(i, g)) continue;
-      if (overlap_ratio(fills[i], group.filled) >= kSameFeatureOverlap) {
+      ++compared;
+      if (overlaps(g)) {
         add(g, true);
         attached = true;
         break;

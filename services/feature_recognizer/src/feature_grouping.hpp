@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "cutting_layers.hpp"
+#include "work_budget.hpp"
 
 namespace ncbridge::feature_recognizer {
 
@@ -18,6 +19,7 @@ struct MillingGroup {
   Region filled;      // the same with holes closed
   double floor = 0;   // lowest cutting level
   bool freeform = false;
+  bool coarse = false;  // made of coarse layers (beyond the work limit): one run of one tool
   std::size_t first_workingstep = 0;
   std::size_t sequence = 0;  // of its first pass: machining order among all features
   std::vector<std::size_t> layers() const;
@@ -30,6 +32,15 @@ inline constexpr double kSameFeatureOverlap = 0.5;
 // Cell of the box indexes that find the features near a layer or a cut, mm.
 inline constexpr double kIndexCell = 25.0;
 
-std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance);
+// Exact comparisons with earlier features are bounded: a layer, a feature or a cut is compared
+// exactly with at most this many of the latest earlier features near it (boxes overlapping, and
+// whatever cheap test the comparison has). A real part has a handful near each; a program of
+// random moves overlaps every feature with every other, and comparing all would be quadratic.
+inline constexpr std::size_t kNearFeatureLimit = 16;
+
+// Exact comparisons charge `budget`; past it a layer starts its own group. Coarse layers make
+// one group per run of one tool, one operation per layer.
+std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance, WorkBudget& budget,
+                                       const std::function<void()>& checkpoint = {});
 
 }  // namespace ncbridge::feature_recognizer

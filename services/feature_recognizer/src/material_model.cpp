@@ -9,19 +9,37 @@ void MaterialModel::add_cut(const Region& area, double floor, std::size_t order)
   if (cuts_.back().box) index_.insert(cuts_.size() - 1, *cuts_.back().box);
 }
 
-std::vector<const MaterialModel::Cut*> MaterialModel::cuts_near(const Box2& box) const {
+std::vector<const MaterialModel::Cut*> MaterialModel::cuts_near(const Box2& box, std::size_t order) const {
   std::vector<const Cut*> out;
-  for (auto i : index_.candidates(box)) out.push_back(&cuts_[i]);
+  for (auto i : index_.candidates(box)) {
+    const Cut& cut = cuts_[i];
+    if (cut.order < order && cut.box && box.xmin <= cut.box->xmax && cut.box->xmin <= box.xmax &&
+        box.ymin <= cut.box->ymax && cut.box->ymin <= box.ymax) {
+      out.push_back(&cut);
+    }
+  }
   return out;
 }
 
+namespace {
+
+// The latest kNearFeatureLimit of `cuts` (bounded exact work), in the order they were made.
+template <typename Cut>
+void keep_latest(std::vector<const Cut*>& cuts) {
+  if (cuts.size() <= kNearFeatureLimit) return;
+  std::stable_sort(cuts.begin(), cuts.end(), [](const Cut* a, const Cut* b) { return a->order > b->order; });
+  cuts.resize(kNearFeatureLimit);
+  std::stable_sort(cuts.begin(), cuts.end(), [](const Cut* a, const Cut* b) { return a->order < b->order; });
+}
+
+}  // namespace
+
 double MaterialModel::height_at(Point2 p, std::size_t order) const {
   double h = stock_top_;
-  for (const Cut* cut : cuts_near({p.x, p.y, p.x, p.y})) {
-    if (cut->order < order && cut->floor < h && cut->box && p.x >= cut->box->xmin && p.x <= cut->box->xmax &&
-        p.y >= cut->box->ymin && p.y <= cut->box->ymax && cut->area.contains(p)) {
-      h = cut->floor;
-    }
+  auto near = cuts_near({p.x, p.y, p.x, p.y}, order);
+  keep_latest(near);
+  for (const Cut* cut : near) {
+    if (cut->floor < h && cut->area.contains(p)) h = cut->floor;
   }
   return h;
 }
@@ -33,9 +51,10 @@ double MaterialModel::top_over(const Region& area, double floor, std::size_t ord
   // elsewhere would leave the same standing region as the next higher level: no new answer).
   const auto box = area.bbox();
   std::vector<const Cut*> near;
-  for (const Cut* cut : cuts_near(*box)) {
-    if (cut->order < order && boxes_overlap(box, cut->box)) near.push_back(cut);
+  for (const Cut* cut : cuts_near(*box, order)) {
+    if (boxes_overlap(box, cut->box)) near.push_back(cut);
   }
+  keep_latest(near);
   std::vector<double> levels{stock_top_};
   for (const Cut* cut : near) {
     if (cut->floor > floor + 1e-3 && cut->floor < stock_top_) levels.push_back(cut->floor);
@@ -43,15 +62,30 @@ double MaterialModel::top_over(const Region& area, double floor, std::size_t ord
   std::sort(levels.begin(), levels.end(), std::greater<>());
   levels.erase(std::unique(levels.begin(), levels.end(), [](double a, double b) { return std::abs(a - b) < 1e-6; }),
                levels.end());
-  for (double level : levels) {
-    // Where material still stands at `level`: not inside any earlier cut whose floor is lower.
-    Region standing = area;
-    for (const Cut* cut : near) {
-      if (cut->floor < level - 1e-6) standing = standing.minus(cut->area);
-    }
-    if (standing.area() >= share * total) return level;
+  // Where material still stands at `level`: not inside any earlier cut whose floor is lower. The
+  // standing area shrinks as the level rises, so the answer is the highest level where it is
+  // still `share` of the area: the stock's top when it is (usually: one pass over the cuts),
+  // else found from the lowest level up, adding the cuts below each level once.
+  Region standing = area;
+  for (const Cut* cut : near) {
+    if (cut->floor < levels.front() - 1e-6) standing = standing.minus(cut->area);
   }
-  return levels.back();
+  if (standing.area() >= share * total || levels.size() == 1) return levels.front();
+  std::vector<const Cut*> by_floor = near;
+  std::stable_sort(by_floor.begin(), by_floor.end(), [](const Cut* a, const Cut* b) { return a->floor < b->floor; });
+  std::size_t next = 0;
+  standing = area;
+  double answer = levels.back();
+  for (auto level = levels.rbegin(); level != levels.rend(); ++level) {
+    bool changed = false;
+    for (; next < by_floor.size() && by_floor[next]->floor < *level - 1e-6; ++next) {
+      standing = standing.minus(by_floor[next]->area);
+      changed = true;
+    }
+    if (changed && standing.area() < share * total) break;
+    answer = *level;
+  }
+  return answer;
 }
 
 }  // namespace ncbridge::feature_recognizer

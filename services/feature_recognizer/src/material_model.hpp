@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "box_index.hpp"
+#include "feature_grouping.hpp"
 #include "region.hpp"
 
 namespace ncbridge::feature_recognizer {
@@ -31,8 +32,9 @@ class MaterialModel {
     std::optional<Box2> box;  // of `area`: cuts elsewhere change nothing here
   };
   static constexpr double kCell = 25.0;  // mm, of the index of the cuts' boxes
-  // The earlier cuts whose boxes overlap `box` (or contain a point), in the order they were made.
-  std::vector<const Cut*> cuts_near(const Box2& box) const;
+  // The cuts before `order` whose boxes touch `box` (or contain a point), in the order they
+  // were made.
+  std::vector<const Cut*> cuts_near(const Box2& box, std::size_t order) const;
   double stock_top_;
   std::vector<Cut> cuts_;
   BoxIndex index_;

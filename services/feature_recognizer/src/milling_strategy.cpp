@@ -2,17 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
+#include <unordered_map>
 #include <numbers>
 
 namespace ncbridge::feature_recognizer {
 namespace {
 
+// sqrt(dx² + dy²): as exact as std::hypot for coordinates in millimetres, without its care for
+// overflow, which costs more than the rest of these loops.
+double planar_distance(double dx, double dy) { return std::sqrt(dx * dx + dy * dy); }
+
 constexpr double kLevel = 1e-3;
 
 struct Straight {
   Point2 a, b;
-  double length() const { return std::hypot(b.x - a.x, b.y - a.y); }
+  double length() const { return planar_distance(b.x - a.x, b.y - a.y); }
 };
 
 // The cutting moves from where the path first reaches the layer's level (its entry ramps,
@@ -23,7 +29,7 @@ std::vector<std::vector<Point2>> level_runs(const Layer& layer) {
     std::size_t first = 0, last = 0;  // the first move at the level and the last in XY, 1-based
     for (std::size_t i = 1; i < path.size(); ++i) {
       if (first == 0 && std::abs(path[i].z - layer.z) < kLevel && std::abs(path[i - 1].z - layer.z) < kLevel) first = i;
-      if (first != 0 && std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y) > 1e-9) last = i;
+      if (first != 0 && planar_distance(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y) > 1e-9) last = i;
     }
     if (first == 0) continue;
     std::vector<Point2> run;
@@ -38,23 +44,27 @@ std::vector<std::vector<Point2>> level_runs(const Layer& layer) {
 // distance, so each point looks at the few near it, not at the whole run.
 int count_closed_loops(const std::vector<Point2>& run, double min_length) {
   constexpr double kClose = 1e-2;
-  using Cell = std::pair<long long, long long>;
   auto cell_of = [](Point2 p) {
-    return Cell{static_cast<long long>(std::floor(p.x / kClose)), static_cast<long long>(std::floor(p.y / kClose))};
+    return std::pair{static_cast<long long>(std::floor(p.x / kClose)), static_cast<long long>(std::floor(p.y / kClose))};
   };
-  std::map<Cell, std::vector<std::size_t>> passed;
+  auto key = [](long long x, long long y) { return static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(y); };
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  // The points passed since the last loop closed, by cell: the latest in each cell, and before
+  // each point the one it followed in its cell (linked lists in one array, no list per cell).
+  std::unordered_map<std::uint64_t, std::size_t> latest;
+  std::vector<std::size_t> previous_in_cell(run.size(), kNone);
   int loops = 0;
   std::vector<double> along(run.size(), 0);
   for (std::size_t i = 0; i < run.size(); ++i) {
-    if (i > 0) along[i] = along[i - 1] + std::hypot(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
-    const Cell c = cell_of(run[i]);
+    if (i > 0) along[i] = along[i - 1] + planar_distance(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
+    const auto c = cell_of(run[i]);
     bool closes = false;
     for (long long dx = -1; dx <= 1 && !closes; ++dx) {
       for (long long dy = -1; dy <= 1 && !closes; ++dy) {
-        auto it = passed.find({c.first + dx, c.second + dy});
-        if (it == passed.end()) continue;
-        for (auto j : it->second) {
-          if (along[i] - along[j] > min_length && std::hypot(run[i].x - run[j].x, run[i].y - run[j].y) < kClose) {
+        auto it = latest.find(key(c.first + dx, c.second + dy));
+        if (it == latest.end()) continue;
+        for (std::size_t j = it->second; j != kNone; j = previous_in_cell[j]) {
+          if (along[i] - along[j] > min_length && planar_distance(run[i].x - run[j].x, run[i].y - run[j].y) < kClose) {
             closes = true;
             break;
           }
@@ -63,9 +73,13 @@ int count_closed_loops(const std::vector<Point2>& run, double min_length) {
     }
     if (closes) {
       ++loops;
-      passed.clear();  // the next loop starts here
+      latest.clear();  // the next loop starts here
     }
-    passed[c].push_back(i);
+    auto [it, inserted] = latest.try_emplace(key(c.first, c.second), i);
+    if (!inserted) {
+      previous_in_cell[i] = it->second;
+      it->second = i;
+    }
   }
   return loops;
 }
@@ -89,7 +103,7 @@ Point2 fit_circle_center(const Layer& layer, Point2 guess, double radius) {
   int n = 0;
   for (const auto& path : layer.paths) {
     for (const auto& p : path) {
-      if (std::abs(std::hypot(p.x - guess.x, p.y - guess.y) - radius) > 0.05) continue;
+      if (std::abs(planar_distance(p.x - guess.x, p.y - guess.y) - radius) > 0.05) continue;
       const double x = p.x - guess.x, y = p.y - guess.y, row[3] = {x, y, 1}, rhs = -(x * x + y * y);
       for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) s[i][j] += row[i] * row[j];
@@ -123,7 +137,7 @@ class RadialSums {
  public:
   RadialSums(const Layer& layer, Point2 c) {
     for (const auto& path : layer.paths) {
-      for (const auto& p : path) distances_.push_back(std::hypot(p.x - c.x, p.y - c.y));
+      for (const auto& p : path) distances_.push_back(planar_distance(p.x - c.x, p.y - c.y));
     }
     std::sort(distances_.begin(), distances_.end());
     sums_.resize(distances_.size() + 1, 0);
@@ -166,12 +180,12 @@ bool find_circles(const Layer& layer, StrategyAnalysis& out) {
     for (std::size_t i = 1; i < path.size(); ++i) {
       const auto& a = path[i - 1];
       const auto& b = path[i];
-      const double length = std::hypot(b.x - a.x, b.y - a.y);
+      const double length = planar_distance(b.x - a.x, b.y - a.y);
       if (length < 1e-9) continue;
-      const double r0 = std::hypot(a.x - c.x, a.y - c.y), r1 = std::hypot(b.x - c.x, b.y - c.y);
+      const double r0 = planar_distance(a.x - c.x, a.y - c.y), r1 = planar_distance(b.x - c.x, b.y - c.y);
       if (std::abs(std::abs(r1 - r0) - length) < 1e-3 * length) continue;  // a radial link between circles
       total += length;
-      const double rm = std::hypot((a.x + b.x) / 2 - c.x, (a.y + b.y) / 2 - c.y);
+      const double rm = planar_distance((a.x + b.x) / 2 - c.x, (a.y + b.y) / 2 - c.y);
       const double tol = std::max(0.02, 0.002 * r0);
       if (r0 < 0.05 || std::abs(r0 - r1) > tol || r0 - rm > std::max(0.05, 0.005 * r0)) continue;
       on += length;
@@ -319,7 +333,7 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
     // tool width along its whole length (it never overlaps itself), else a spiral.
     double length = 0;
     for (const auto& run : runs) {
-      for (std::size_t i = 1; i < run.size(); ++i) length += std::hypot(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
+      for (std::size_t i = 1; i < run.size(); ++i) length += planar_distance(run[i].x - run[i - 1].x, run[i].y - run[i - 1].y);
     }
     const double one_width = length * 2 * tool_r + std::numbers::pi * tool_r * tool_r;
     const double swept = layer.area.area();

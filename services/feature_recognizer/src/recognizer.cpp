@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <tuple>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <unordered_map>
 
 #include "cutting_layers.hpp"
 #include "feature_classification.hpp"
@@ -11,44 +13,75 @@
 #include "hole_recognition.hpp"
 #include "material_model.hpp"
 #include "swept_area.hpp"
+#include "work_budget.hpp"
 
 namespace ncbridge::feature_recognizer {
 namespace {
 
-// Step-down layers repeat the same XY path: their swept region is computed once.
-using PathKey = std::tuple<long long, std::vector<long long>>;
-
-// The layer's XY paths relative to their first point: a path repeated elsewhere (a pattern of
-// equal pockets, step-downs) has the same key, and its swept area is the cached one moved.
-PathKey path_key(const Layer& layer, Point2 origin) {
-  std::vector<long long> coords;
+// Step-down layers repeat the same XY path: their swept region is computed once. A layer's key
+// is its tool and its XY paths relative to their first point, rounded to 0.1 µm: a path repeated
+// elsewhere (a pattern of equal pockets, step-downs) has the same key, and its swept area is the
+// cached one moved. The cache holds a hash of the key and the layer it was made for, whose key
+// is compared in full on a hit (no copy of every path's coordinates is kept).
+Point2 path_origin(const Layer& layer) {
   for (const auto& path : layer.paths) {
-    for (const auto& p : path) {
-      coords.push_back(std::llround((p.x - origin.x) * 1e4));
-      coords.push_back(std::llround((p.y - origin.y) * 1e4));
-    }
-    coords.push_back(-(1LL << 62));  // path separator
+    if (!path.empty()) return {path.front().x, path.front().y};
   }
-  return {std::llround(layer.tool.diameter * 1e4), std::move(coords)};
+  return {};
 }
 
-void compute_layer_areas(std::vector<Layer>& layers, double tolerance) {
-  std::map<PathKey, std::pair<Region, Point2>> cache;  // swept area, and the origin it was made at
-  for (auto& layer : layers) {
-    Point2 origin;
-    for (const auto& path : layer.paths) {
-      if (!path.empty()) {
-        origin = {path.front().x, path.front().y};
-        break;
-      }
+template <typename Visit>
+void visit_key(const Layer& layer, Point2 origin, Visit visit) {
+  visit(std::llround(layer.tool.diameter * 1e4));
+  for (const auto& path : layer.paths) {
+    for (const auto& p : path) {
+      visit(std::llround((p.x - origin.x) * 1e4));
+      visit(std::llround((p.y - origin.y) * 1e4));
     }
-    auto key = path_key(layer, origin);
-    auto it = cache.find(key);
-    if (it == cache.end()) {
-      it = cache.emplace(std::move(key), std::pair{swept_area(layer.xy_paths(), layer.tool.diameter / 2, tolerance), origin}).first;
+    visit(-(1LL << 62));  // path separator
+  }
+}
+
+std::uint64_t key_hash(const Layer& layer, Point2 origin) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  visit_key(layer, origin, [&](long long v) { h = (h ^ static_cast<std::uint64_t>(v)) * 0x100000001b3ull; });
+  return h;
+}
+
+bool same_key(const Layer& a, Point2 a_origin, const Layer& b, Point2 b_origin) {
+  std::vector<long long> ka, kb;
+  visit_key(a, a_origin, [&](long long v) { ka.push_back(v); });
+  visit_key(b, b_origin, [&](long long v) { kb.push_back(v); });
+  return ka == kb;
+}
+
+// Past the budget (the path points and area vertices of the layers made so far) the layers
+// are coarse: no swept area.
+void compute_layer_areas(std::vector<Layer>& layers, double tolerance, WorkBudget& budget,
+                         const std::function<void()>& checkpoint) {
+  std::unordered_multimap<std::uint64_t, std::size_t> cache;  // key hash -> the layer whose area it is
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    if (checkpoint) checkpoint();
+    auto& layer = layers[i];
+    if (!budget.available() || layer.coarse) {
+      layer.coarse = true;
+      continue;
     }
-    const auto& [area, made_at] = it->second;
-    layer.area = made_at == origin ? area : area.translated(origin.x - made_at.x, origin.y - made_at.y);
+    const Point2 origin = path_origin(layer);
+    const auto hash = key_hash(layer, origin);
+    std::optional<std::size_t> made;
+    for (auto [it, end] = cache.equal_range(hash); it != end && !made; ++it) {
+      if (same_key(layers[it->second], path_origin(layers[it->second]), layer, origin)) made = it->second;
+    }
+    if (made) {
+      const Point2 made_at = path_origin(layers[*made]);
+      const auto& area = layers[*made].area;
+      layer.area = made_at == origin ? area : area.translated(origin.x - made_at.x, origin.y - made_at.y);
+    } else {
+      const WorkCharge charge(budget);
+      layer.area = swept_area(layer.xy_paths(), layer.tool.diameter / 2, tolerance);
+      cache.emplace(hash, i);
+    }
     if (auto box = layer.area.bbox()) layer.extent = *box;
   }
 }
@@ -80,7 +113,7 @@ double box_area(const Box2& b) { return std::max(0.0, b.width()) * std::max(0.0,
 // operations that go below the outer floor.
 void split_nested_step_downs(std::vector<MillingGroup>& groups, const std::vector<Layer>& layers) {
   for (std::size_t g = 0; g < groups.size(); ++g) {
-    if (groups[g].freeform) continue;
+    if (groups[g].freeform || groups[g].coarse) continue;
     for (std::size_t k = 0; k < groups[g].operations.size(); ++k) {
       auto& op = groups[g].operations[k];
       std::size_t split = 0;
@@ -130,20 +163,31 @@ struct Pending {
 
 std::vector<RecognizedFeature> recognize(const std::vector<ToolpathWorkingstep>& workingsteps,
                                          const setup::Stock& stock, const Options& options) {
-  auto analysis = analyse_cutter_locations(workingsteps, options.chord_tolerance);
-  compute_layer_areas(analysis.layers, options.chord_tolerance);
-  auto groups = group_layers(analysis.layers, options.finishing_allowance);
+  const auto& checkpoint = options.checkpoint;
+  auto analysis = analyse_cutter_locations(workingsteps, options.chord_tolerance, checkpoint);
+  // One budget per stage (docs/recognition.md, "Bounded cost"), in proportion to the program.
+  double points = static_cast<double>(analysis.drill_passes.size());
+  for (const auto& layer : analysis.layers) {
+    for (const auto& path : layer.paths) points += static_cast<double>(path.size());
+  }
+  const double limit = options.work_per_point > 0 ? options.work_base + options.work_per_point * points
+                                                  : std::numeric_limits<double>::infinity();
+  WorkBudget areas_budget(limit), grouping_budget(limit), classification_budget(limit), material_budget(limit);
+  compute_layer_areas(analysis.layers, options.chord_tolerance, areas_budget, checkpoint);
+  auto groups = group_layers(analysis.layers, options.finishing_allowance, grouping_budget, checkpoint);
   split_nested_step_downs(groups, analysis.layers);
   const auto part = find_part_envelope(groups, stock, options.chord_tolerance);
 
   std::vector<Pending> pending;
   for (std::size_t g = 0; g < groups.size(); ++g) {
-    if (auto c = classify_group(g, groups, analysis.layers, part)) {
+    if (checkpoint) checkpoint();
+    if (auto c = classify_group(g, groups, analysis.layers, part, classification_budget)) {
       Pending p{c->order, std::move(*c), groups[g].area};
       pending.push_back(std::move(p));
     }
   }
   for (const auto& hole : recognize_holes(analysis.drill_passes)) {
+    if (checkpoint) checkpoint();
     if (!part.outline.contains(hole.at)) continue;  // drilling in the air beside the part
     ClassifiedFeature c;
     auto& f = c.feature;
@@ -173,9 +217,15 @@ std::vector<RecognizedFeature> recognize(const std::vector<ToolpathWorkingstep>&
   MaterialModel material(stock.max[2]);
   std::vector<RecognizedFeature> out;
   for (auto& p : pending) {
+    if (checkpoint) checkpoint();
     auto& f = p.item.feature;
-    f.top_z = p.is_hole ? material.height_at(p.hole_at, p.order)
-                        : material.top_over(p.item.footprint, f.bottom_z, p.order);
+    if (!material_budget.available()) {
+      f.top_z = stock.max[2];  // not compared with the earlier cuts (beyond the work limit)
+      f.approximate = true;
+    } else {
+      const WorkCharge charge(material_budget);
+      f.top_z = p.is_hole ? material.height_at(p.hole_at, p.order) : material.top_over(p.item.footprint, f.bottom_z, p.order);
+    }
     material.add_cut(p.cut, f.bottom_z, p.order);
     out.push_back(std::move(f));
   }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <atomic>
 #include <mutex>
 
 namespace ncbridge::feature_recognizer {
@@ -20,6 +21,9 @@ using ClipperLib::Path;
 using ClipperLib::Paths;
 
 constexpr double kScale = 1.0 / kGrid;
+
+// The count region_work() reports (an instrument, read for work limits; no result depends on it).
+thread_local std::uint64_t work_done = 0;
 // Well inside Clipper's full range, so sums and products of two coordinates never overflow.
 constexpr double kLimit = 1e15;
 
@@ -65,7 +69,7 @@ struct Tile {
   Paths paths;  // the region within `box`: outer contours positive, holes negative
 };
 
-std::size_t vertex_count(const Paths& paths) {
+std::size_t count_vertices(const Paths& paths) {
   std::size_t n = 0;
   for (const auto& p : paths) n += p.size();
   return n;
@@ -77,12 +81,13 @@ Paths clip_to(const Paths& paths, const GridBox& box) {
   clipper.AddPath(box.ring(), ClipperLib::ptClip, true);
   Paths out;
   clipper.Execute(ClipperLib::ctIntersection, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  work_done += count_vertices(paths) + 4 + count_vertices(out);
   return out;
 }
 
 void cut_into_tiles(const Paths& paths, const GridBox& box, int depth, std::vector<Tile>& out) {
   const bool splittable = box.xmax - box.xmin >= 2 || box.ymax - box.ymin >= 2;
-  if (vertex_count(paths) <= kTileVertices || depth >= 24 || !splittable) {
+  if (count_vertices(paths) <= kTileVertices || depth >= 24 || !splittable) {
     out.push_back({box, paths});
     return;
   }
@@ -198,8 +203,14 @@ struct Region::Impl {
 
   // Contours that cover at least the part of the region inside `near` (all of them for a small
   // region): what an operation with a region inside `near` needs.
+  // Tiles pay off for a region met again and again by small ones (a face, the band along the
+  // part's outline); a large region met a few times only (what earlier features removed near
+  // one) is used whole.
   Paths paths_near(const std::optional<Box2>& near) const {
     if (!tiled() || !near) return paths();
+    const double near_area = std::max(0.0, near->xmax - near->xmin) * std::max(0.0, near->ymax - near->ymin);
+    const double own_area = std::max(0.0, box->xmax - box->xmin) * std::max(0.0, box->ymax - box->ymin);
+    if (near_area >= 0.25 * own_area || small_queries_.fetch_add(1, std::memory_order_relaxed) < 8) return paths();
     const GridBox g = grid_box(*near);
     Paths out;
     for (const auto& tile : tiles()) {
@@ -277,10 +288,13 @@ struct Region::Impl {
     clipper.AddPaths(clip, ClipperLib::ptClip, true);
     ClipperLib::PolyTree tree;
     clipper.Execute(type, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    return from_tree(tree);
+    auto impl = from_tree(tree);
+    work_done += count_vertices(subject) + count_vertices(clip) + impl->vertices;
+    return impl;
   }
 
  private:
+  mutable std::atomic<int> small_queries_{0};  // operations with a region in a small part of this one's box
   mutable std::once_flag tiles_made_;
   mutable std::vector<Tile> tiles_;
 };
@@ -313,6 +327,17 @@ Region Region::union_of(const std::vector<Ring>& polygons) {
   return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
 }
 
+Region Region::from_winding(const std::vector<Ring>& curves) {
+  Paths paths;
+  paths.reserve(curves.size());
+  for (const auto& ring : curves) {
+    Path path = to_path(ring);
+    if (path.size() >= 3) paths.push_back(std::move(path));
+  }
+  if (paths.empty()) return Region();
+  return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
+}
+
 Region Region::from_polygons(const std::vector<PolygonWithHoles>& polygons) {
   Paths paths;
   for (const auto& pwh : polygons) {
@@ -328,6 +353,26 @@ Region Region::from_polygons(const std::vector<PolygonWithHoles>& polygons) {
     }
   }
   if (paths.empty()) return Region();
+  return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
+}
+
+Region Region::union_all(const std::vector<Region>& regions) {
+  std::vector<const Region*> parts;
+  for (const auto& r : regions) {
+    if (!r.empty()) parts.push_back(&r);
+  }
+  if (parts.empty()) return Region();
+  if (parts.size() == 1) return *parts.front();
+  if (parts.size() == 2) return parts[0]->united(*parts[1]);
+  // Each region winds once around its points (outer contours positive, holes negative), so the
+  // points where the sum of the windings is not zero are the union.
+  Paths paths;
+  for (const auto* r : parts) {
+    for (const auto& c : r->impl_->components) {
+      paths.push_back(c.outer);
+      paths.insert(paths.end(), c.holes.begin(), c.holes.end());
+    }
+  }
   return Region(Impl::execute(ClipperLib::ctUnion, paths, {}));
 }
 
@@ -395,6 +440,9 @@ Region Region::translated(double dx, double dy) const {
 
 double Region::area() const { return impl_->area; }
 
+std::size_t Region::vertex_count() const { return impl_->vertices; }
+
+
 std::optional<Box2> Region::bbox() const { return impl_->box; }
 
 bool Region::contains(Point2 p) const {
@@ -404,6 +452,7 @@ bool Region::contains(Point2 p) const {
     for (const auto& tile : impl_->tiles()) {
       if (!tile.box.touches({q.X, q.Y, q.X, q.Y})) continue;
       int winding = 0;
+      work_done += count_vertices(tile.paths);
       for (const auto& path : tile.paths) {
         const int side = ClipperLib::PointInPolygon(q, path);
         if (side == -1) return true;  // on the boundary
@@ -414,6 +463,7 @@ bool Region::contains(Point2 p) const {
     return false;
   }
   for (const auto& c : impl_->components) {
+    work_done += c.outer.size();
     if (ClipperLib::PointInPolygon(q, c.outer) == 0) continue;  // outside (1 inside, -1 on it)
     const bool in_hole = std::any_of(c.holes.begin(), c.holes.end(),
                                      [&](const Path& h) { return ClipperLib::PointInPolygon(q, h) == 1; });
@@ -443,6 +493,8 @@ std::vector<PolygonWithHoles> Region::polygons() const {
   }
   return out;
 }
+
+std::uint64_t region_work() { return work_done; }
 
 bool boxes_apart(const std::optional<Box2>& a, const std::optional<Box2>& b) {
   return a && b && (a->xmax < b->xmin || b->xmax < a->xmin || a->ymax < b->ymin || b->ymax < a->ymin);

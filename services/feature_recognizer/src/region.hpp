@@ -2,6 +2,7 @@
 // A planar point set (the cutting area of a tool, the stock's outline, ...) as an immutable
 // value. Coordinates live on a grid of kGrid mm, where Boolean operations are exact; each
 // operation rounds the vertices it creates to the grid (region.cpp states the bound).
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -32,8 +33,14 @@ class Region {
   static Region polygon(const Ring& ring);  // a simple polygon, either orientation
   static Region rectangle(const Box2& box);
   static Region union_of(const std::vector<Ring>& polygons);  // simple polygons
+  // The points that closed curves (each may cross itself) wind around a non-zero number of
+  // times, their windings summed; curves must not wind negatively where others wind positively.
+  static Region from_winding(const std::vector<Ring>& curves);
   // Boundaries as polygons() gives them (outer rings and their holes, any orientation).
   static Region from_polygons(const std::vector<PolygonWithHoles>& polygons);
+
+  // The union of many regions in one sweep (chained unions would redo the growing result each time).
+  static Region union_all(const std::vector<Region>& regions);
 
   Region united(const Region& other) const;
   Region intersected(const Region& other) const;
@@ -46,6 +53,7 @@ class Region {
   // arithmetic, which matters when step-downs repeat one swept area many times.
   bool same_as(const Region& other) const { return impl_ == other.impl_; }
   double area() const;
+  std::size_t vertex_count() const;  // of every boundary
   std::optional<Box2> bbox() const;
   bool contains(Point2 p) const;  // interior or boundary
   std::vector<Region> components() const;
@@ -56,6 +64,12 @@ class Region {
   explicit Region(std::shared_ptr<const Impl> impl);
   std::shared_ptr<const Impl> impl_;
 };
+
+// The work the region operations have done on this thread so far: the vertices handed to and
+// made by every Boolean operation, and those a point test read. A monotonic count, deterministic
+// for a given sequence of operations, that bounds on work are measured with (work_budget.hpp);
+// it affects no result.
+std::uint64_t region_work();
 
 // area(a ∩ b) / area(a ∪ b), 0 when both are empty.
 double overlap_ratio(const Region& a, const Region& b);

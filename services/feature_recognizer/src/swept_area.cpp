@@ -51,12 +51,13 @@ Ring stadium(Point2 a, Point2 b, double radius, double tolerance) {
 
 namespace {
 
-double distance_to_segment(Point2 p, Point2 a, Point2 b) {
+double squared_distance_to_segment(Point2 p, Point2 a, Point2 b) {
   const double dx = b.x - a.x, dy = b.y - a.y;
   const double len2 = dx * dx + dy * dy;
   double t = len2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0;
   t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+  const double ex = p.x - (a.x + t * dx), ey = p.y - (a.y + t * dy);
+  return ex * ex + ey * ey;
 }
 
 void douglas_peucker(const std::vector<Point2>& pts, std::size_t first, std::size_t last, double tol,
@@ -70,10 +71,10 @@ void douglas_peucker(const std::vector<Point2>& pts, std::size_t first, std::siz
     double worst = -1;
     std::size_t at = i;
     for (std::size_t k = i + 1; k < j; ++k) {
-      const double d = distance_to_segment(pts[k], pts[i], pts[j]);
+      const double d = squared_distance_to_segment(pts[k], pts[i], pts[j]);
       if (d > worst) worst = d, at = k;
     }
-    if (worst > tol) {
+    if (worst > tol * tol) {
       keep[at] = true;
       todo.push_back({i, at});
       todo.push_back({at, j});
@@ -86,7 +87,8 @@ void douglas_peucker(const std::vector<Point2>& pts, std::size_t first, std::siz
 std::vector<Point2> simplify_polyline(const std::vector<Point2>& points, double tolerance) {
   std::vector<Point2> pts;
   for (const auto& p : points) {
-    if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
+    const double dx = pts.empty() ? 1 : p.x - pts.back().x, dy = pts.empty() ? 1 : p.y - pts.back().y;
+    if (dx * dx + dy * dy > 1e-18) pts.push_back(p);
   }
   if (pts.size() <= 2) return pts;
   std::vector<bool> keep(pts.size(), false);
@@ -129,81 +131,96 @@ std::size_t extreme_vertex(const std::vector<Point2>& disk, double nx, double ny
   return static_cast<std::size_t>(best);
 }
 
-Ring moved(const std::vector<Point2>& disk, Point2 at) {
-  Ring ring;
-  ring.reserve(disk.size());
-  for (const auto& v : disk) ring.push_back({at.x + v.x, at.y + v.y});
-  return ring;
-}
-
-// The sweep of the disk along a polyline as convex pieces whose union is the union of the
-// stadiums of its segments: the disk at both ends; per segment the parallelogram between the
-// disk's extreme vertices across it (a stadium is the two disks and that parallelogram); at each
-// inner vertex the sector of the disk there on the outer side of the turn, between the two
-// segments' extreme vertices (the rest of that disk lies in the neighbouring pieces).
-void sweep_pieces(const std::vector<Point2>& pts, const std::vector<Point2>& disk, double radius, std::vector<Ring>& out) {
-  out.push_back(moved(disk, pts.front()));
-  if (pts.size() == 1) return;
-  const std::size_t n = disk.size();
-  auto unit = [&](std::size_t i) {
+// The outline of the sweep of the disk along a polyline, as one closed curve (Minkowski sum by
+// convolution): along the path on the right at the disk's extreme vertex, round the end on the
+// disk, back along the left, round the start. Where the path turns away from a side, the disk's
+// arc between the two segments' extreme vertices joins them; where it turns towards it, the
+// chord of the disk between them. The curve crosses itself wherever the sweep
+// overlaps itself, but it winds around every point of the union of the segments' stadiums at
+// least once and around no other point (docs/recognition.md, "Geometry"), so the union is the
+// points of non-zero winding, with none of the crossings inside it made by stadiums.
+Ring sweep_outline(const std::vector<Point2>& pts, const std::vector<Point2>& disk) {
+  const std::size_t n = disk.size(), half = n / 2;
+  Ring out;
+  auto at = [&](Point2 p, std::size_t k) { out.push_back({p.x + disk[k].x, p.y + disk[k].y}); };
+  if (pts.size() == 1) {
+    for (std::size_t k = 0; k < n; ++k) at(pts[0], k);
+    return out;
+  }
+  const std::size_t m = pts.size() - 1;  // segments
+  std::vector<Point2> u(m);
+  std::vector<std::size_t> right(m);
+  for (std::size_t i = 0; i < m; ++i) {
     const double dx = pts[i + 1].x - pts[i].x, dy = pts[i + 1].y - pts[i].y, l = std::hypot(dx, dy);
-    return Point2{dx / l, dy / l};
-  };
-  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-    const Point2 u = unit(i), a = pts[i], b = pts[i + 1];
-    const auto right = disk[extreme_vertex(disk, u.y, -u.x)], left = disk[extreme_vertex(disk, -u.y, u.x)];
-    out.push_back({{a.x + right.x, a.y + right.y}, {b.x + right.x, b.y + right.y}, {b.x + left.x, b.y + left.y},
-                   {a.x + left.x, a.y + left.y}});
-    if (i + 2 >= pts.size()) break;
-    const Point2 w = unit(i + 1);
-    const double cross = u.x * w.y - u.y * w.x, dot = u.x * w.x + u.y * w.y;
-    if (cross == 0 && dot > 0) continue;  // straight on
-    // A left turn (or a reversal) opens the right side: its extreme vertices turn
-    // counter-clockwise; a right turn opens the left side, clockwise.
-    const bool left_turn = cross > 0 || (cross == 0 && dot < 0);
-    const std::size_t from = left_turn ? extreme_vertex(disk, u.y, -u.x) : extreme_vertex(disk, -u.y, u.x);
-    const std::size_t to = left_turn ? extreme_vertex(disk, w.y, -w.x) : extreme_vertex(disk, -w.y, w.x);
-    if (from == to) continue;
-    const std::size_t steps = left_turn ? (to + n - from) % n : (from + n - to) % n;
-    // The sector's apex is not the vertex itself but a point of the disk behind it, inside both
-    // segments' parallelograms: the sector then overlaps them instead of meeting them along the
-    // lines through the vertex, where rounding to the grid would leave slivers.
-    const Point2 mid{disk[from].x + disk[to].x, disk[from].y + disk[to].y};
-    const double mid_length = std::hypot(mid.x, mid.y);
-    const Point2 m = mid_length > 1e-9 * radius ? Point2{mid.x / mid_length, mid.y / mid_length} : u;
-    Ring sector{{b.x - 0.5 * radius * m.x, b.y - 0.5 * radius * m.y}};
-    for (std::size_t k = 0; k <= steps; ++k) {
-      const auto& v = disk[left_turn ? (from + k) % n : (from + n - k) % n];
-      sector.push_back({b.x + v.x, b.y + v.y});
-    }
-    out.push_back(std::move(sector));
+    u[i] = {dx / l, dy / l};
+    right[i] = extreme_vertex(disk, u[i].y, -u[i].x);
   }
-  out.push_back(moved(disk, pts.back()));
+  auto left = [&](std::size_t i) { return (right[i] + half) % n; };
+  auto arc = [&](Point2 p, std::size_t from, std::size_t to) {  // counter-clockwise, `from` excluded
+    for (std::size_t k = (from + 1) % n;; k = (k + 1) % n) {
+      at(p, k);
+      if (k == to) break;
+    }
+  };
+  // A turn at a vertex, seen from one side: `away` when the path turns away from that side
+  // (counter-clockwise for the right side; a reversal counts as turning away from both).
+  auto join = [&](Point2 p, std::size_t from, std::size_t to, bool away) {
+    if (from == to) return;
+    if (away) {
+      arc(p, from, to);
+    } else {
+      at(p, to);
+    }
+  };
+  auto turn = [&](std::size_t i) {  // between segments i - 1 and i: +1 left, -1 right, 0 reversal or straight
+    const double cross = u[i - 1].x * u[i].y - u[i - 1].y * u[i].x;
+    return cross > 0 ? 1 : cross < 0 ? -1 : 0;
+  };
+  at(pts[0], right[0]);
+  for (std::size_t i = 0; i < m; ++i) {
+    if (i > 0) join(pts[i], right[i - 1], right[i], turn(i) >= 0);
+    at(pts[i + 1], right[i]);
+  }
+  arc(pts[m], right[m - 1], left(m - 1));
+  for (std::size_t i = m; i-- > 0;) {
+    at(pts[i], left(i));
+    if (i > 0) join(pts[i], left(i), left(i - 1), turn(i) <= 0);
+  }
+  arc(pts[0], left(0), right[0]);
+  out.pop_back();  // the start again
+  return out;
 }
 
-// Pieces taken in path order are near each other: uniting neighbours first resolves their many
-// overlaps once, and the partial unions met higher up have only their outlines left.
-constexpr std::size_t kPiecesPerLeaf = 64;
+// Long paths are cut into pieces of this many segments (sharing their end points), and the
+// pieces' outlines, in path order, are united in a balanced tree: neighbours first, so that a
+// union meets few crossings and the partial unions higher up carry only their outlines.
+constexpr std::size_t kSegmentsPerPiece = 128;
 
-Region union_tree(const std::vector<Ring>& pieces, std::size_t begin, std::size_t end) {
-  if (end - begin <= kPiecesPerLeaf) {
-    return Region::union_of({pieces.begin() + static_cast<std::ptrdiff_t>(begin), pieces.begin() + static_cast<std::ptrdiff_t>(end)});
-  }
+Region union_tree(const std::vector<Ring>& outlines, std::size_t begin, std::size_t end) {
+  if (end - begin == 1) return Region::from_winding({outlines[begin]});
   const std::size_t mid = begin + (end - begin) / 2;
-  return union_tree(pieces, begin, mid).united(union_tree(pieces, mid, end));
+  return union_tree(outlines, begin, mid).united(union_tree(outlines, mid, end));
 }
 
 }  // namespace
 
 Region swept_area(const std::vector<std::vector<Point2>>& polylines, double radius, double tolerance) {
   const auto disk = polygonal_disk(radius, tolerance);
-  std::vector<Ring> pieces;
+  std::vector<Ring> outlines;
   for (const auto& line : polylines) {
     const auto pts = simplify_polyline(line, tolerance);
-    if (!pts.empty()) sweep_pieces(pts, disk, radius, pieces);
+    if (pts.empty()) continue;
+    for (std::size_t first = 0;;) {
+      const std::size_t last = std::min(pts.size() - 1, first + kSegmentsPerPiece);
+      outlines.push_back(sweep_outline({pts.begin() + static_cast<std::ptrdiff_t>(first),
+                                        pts.begin() + static_cast<std::ptrdiff_t>(last) + 1},
+                                       disk));
+      if (last + 1 >= pts.size()) break;
+      first = last;
+    }
   }
-  if (pieces.empty()) return Region();
-  return union_tree(pieces, 0, pieces.size());
+  if (outlines.empty()) return Region();
+  return union_tree(outlines, 0, outlines.size());
 }
 
 Region boundary_band(const Region& region, double radius, double tolerance) {

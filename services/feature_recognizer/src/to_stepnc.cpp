@@ -217,7 +217,10 @@ sn::Feature slot(const RecognizedFeature& r, const std::string& id) {
   return s;
 }
 
-// The step's frame is at one end of its open edge: local x along the edge, local y into the part.
+// ISO 14649-10 sweeps a step's wall along its open_boundary and the step runs from that wall
+// out to the workpiece's edge: the frame is at one end of the wall's foot, local x along the
+// wall, local y away from it towards the open side. So the file says where the wall stands
+// (the step's width), not only how long the step is.
 sn::Feature step(const RecognizedFeature& r, const std::string& id) {
   double xmin = r.x, xmax = r.x, ymin = r.y, ymax = r.y;
   if (!r.profile.outline.empty()) {
@@ -236,19 +239,19 @@ sn::Feature step(const RecognizedFeature& r, const std::string& id) {
       break;
     }
   }
-  double nx = 0, ny = 0, ex = 0, ey = 0;  // inward normal, midpoint of the open edge
+  double nx = 0, ny = 0, wx = 0, wy = 0;  // inward normal (from the open side), middle of the wall
   const double cx = (xmin + xmax) / 2, cy = (ymin + ymax) / 2;
   switch (side) {
-    case OpenSide::XMinus: nx = 1, ex = xmin, ey = cy; break;
-    case OpenSide::XPlus: nx = -1, ex = xmax, ey = cy; break;
-    case OpenSide::YMinus: ny = 1, ex = cx, ey = ymin; break;
-    case OpenSide::YPlus: ny = -1, ex = cx, ey = ymax; break;
+    case OpenSide::XMinus: nx = 1, wx = xmax, wy = cy; break;
+    case OpenSide::XPlus: nx = -1, wx = xmin, wy = cy; break;
+    case OpenSide::YMinus: ny = 1, wx = cx, wy = ymax; break;
+    case OpenSide::YPlus: ny = -1, wx = cx, wy = ymin; break;
   }
-  const sn::Direction along{ny, -nx, 0};
+  const sn::Direction along{-ny, nx, 0};  // so that local y (z x along) points out, -n
   const double length = runs_along_y ? ymax - ymin : xmax - xmin;
   sn::Step s;
   s.its_id = id;
-  s.feature_placement = Frame{ex - length / 2 * along.x, ey - length / 2 * along.y, r.top_z, along}.placement();
+  s.feature_placement = Frame{wx - length / 2 * along.x, wy - length / 2 * along.y, r.top_z, along}.placement();
   s.depth = depth_plane(r.depth());
   s.open_boundary.distance = toleranced(length);
   s.open_boundary.its_direction = {1, 0, 0};
@@ -507,6 +510,10 @@ class Cc2Builder {
         } else {
           out_.project.main_workplan.its_elements.push_back(*rapid);
         }
+        continue;
+      }
+      if (const auto* probing = std::get_if<sn::WorkpieceProbing>(&elements[e])) {
+        out_.project.main_workplan.its_elements.push_back(*probing);  // kept as it is, in its place
         continue;
       }
       const auto& ws = *machining_[k];

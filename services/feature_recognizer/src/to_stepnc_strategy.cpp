@@ -10,6 +10,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kLevelTolerance = 1e-3;  // mm: points of one cutting level
 constexpr double kShortestPass = 1.0;     // mm: shorter straight moves are not passes
+constexpr double kSplineChordTolerance = 0.001;  // mm: B-splines are followed as chords this close
 
 struct Segment {
   stepnc::CartesianPoint a, b;
@@ -23,6 +24,11 @@ std::vector<stepnc::CartesianPoint> curve_points(const stepnc::CompositeCurve& c
   for (const auto& segment : curve.segments) {
     if (const auto* line = std::get_if<stepnc::Polyline>(&segment)) {
       out.insert(out.end(), line->points.begin(), line->points.end());
+      continue;
+    }
+    if (const auto* spline = std::get_if<stepnc::BSplineCurve>(&segment)) {
+      const auto points = stepnc::bspline_polyline(*spline, kSplineChordTolerance);
+      out.insert(out.end(), points.begin(), points.end());
       continue;
     }
     const auto& arc = std::get<stepnc::TrimmedCircle>(segment);

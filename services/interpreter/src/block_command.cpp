@@ -11,9 +11,9 @@ namespace {
 // Modal group of a G code (x10), -1 when unknown.
 int g_group(int g) {
   switch (g) {
-    case 40: case 100: case 280: case 281: case 300: case 301: case 520: case 530: case 920: case 921: case 922: case 923:
+    case 40: case 53: case 100: case 280: case 281: case 300: case 301: case 520: case 530: case 920: case 921: case 922: case 923:
       return kGNonModal;
-    case 0: case 10: case 20: case 30: case 330: case 331: case 382: case 383: case 384: case 385:
+    case 0: case 10: case 20: case 30: case 50: case 51: case 52: case 330: case 331: case 382: case 383: case 384: case 385:
     case 730: case 740: case 760: case 800: case 810: case 820: case 830: case 840: case 850: case 860: case 870:
     case 880: case 890:
       return kGMotion;
@@ -37,6 +37,7 @@ int g_group(int g) {
 int m_group(int m) {
   switch (m) {
     case 0: case 1: case 2: case 30: case 60: return kMStop;
+    case 66: return kMInput;
     case 6: case 61: return kMToolChange;
     case 3: case 4: case 5: case 19: case 70: case 71: case 72: case 73: return kMSpindle;
     case 7: case 8: case 9: return kMCoolant;
@@ -58,10 +59,13 @@ void BlockCommand::reset() {
   present = 0;
   g.fill(-1);
   m.fill(-1);
+  g_column.fill(0);  // a modal code has no column in this block: errors then name the block's first
+  m_column.fill(0);
   mist_on = flood_on = false;
   has_polar_radius = has_polar_angle = false;
   comment = {};
   comment_is_message = false;
+  comment_action = CommentAction::Comment;
 }
 
 void assemble_command(const Block& block, const double* values, const std::string& file, BlockCommand& out) {

@@ -19,7 +19,7 @@ enum GroupG : int {
 };
 // M-code groups.
 enum GroupM : int {
-  kMStop = 4, kMToolChange = 6, kMSpindle = 7, kMCoolant = 8, kMOverride = 9, kMUser = 10,
+  kMStop = 4, kMInput = 5, kMToolChange = 6, kMSpindle = 7, kMCoolant = 8, kMOverride = 9, kMUser = 10,
   kMGroupCount = 11
 };
 
@@ -44,6 +44,10 @@ struct BlockCommand {
 
   std::string_view comment;       // the last plain comment of the line
   bool comment_is_message = false;
+  // What the comment asks for beyond a COMMENT call (set by the control-flow runner for
+  // LinuxCNC's active comments; `comment` then holds the text to print or log).
+  enum class CommentAction : std::uint8_t { Comment, Print, Log, LogOpen, LogAppend, LogClose, Nothing };
+  CommentAction comment_action = CommentAction::Comment;
   std::uint32_t line = 0;
 
   bool has(char letter) const { return (present >> (letter - 'a')) & 1u; }

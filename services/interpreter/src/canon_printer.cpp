@@ -59,6 +59,10 @@ std::string_view plane_name(Plane p) {
 void print_pose6(Out& o, const Pose& p) { o.reals({p.x, p.y, p.z, p.a, p.b, p.c}); }
 
 void format(Out& o, const Data& data, Units units) {
+  if (const auto* print = std::get_if<Print>(&data)) {  // rs274: the bare text
+    o << print->text;
+    return;
+  }
   // rs274 spells this one without the final H
   if (std::holds_alternative<StartSpeedFeedSynch>(data)) {
     o << "START_SPEED_FEED_SYNC";
@@ -167,8 +171,12 @@ void format(Out& o, const Data& data, Units units) {
           o.integer(d.orientation);
         } else if constexpr (std::is_same_v<T, WaitSpindleOrientComplete>) {
           o.real(d.timeout);
-        } else if constexpr (std::is_same_v<T, Comment> || std::is_same_v<T, Message>) {
+        } else if constexpr (std::is_same_v<T, NurbsFeed>) {
+          o.integer(static_cast<long long>(d.control_points.size())) << ", ...";  // as rs274 prints it
+        } else if constexpr (std::is_same_v<T, Comment> || std::is_same_v<T, Message> || std::is_same_v<T, Log>) {
           o << '"' << d.text << '"';
+        } else if constexpr (std::is_same_v<T, LogOpen> || std::is_same_v<T, LogAppend>) {
+          o << '"' << d.path << '"';
         }
       },
       data);
@@ -212,7 +220,7 @@ void CanonPrinter::write_prefix(const canonical::Source& source) {
 }
 
 void CanonPrinter::call(const canonical::Call& call) {
-  write_prefix(call.source);
+  if (!std::holds_alternative<Print>(call.data)) write_prefix(call.source);  // rs274 numbers no PRINT line
   if (const auto* u = std::get_if<UseLengthUnits>(&call.data)) units_ = u->units;
   Out o(buffer_);
   format(o, call.data, units_);

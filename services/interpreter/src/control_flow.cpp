@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "active_comments.hpp"
 #include "expression.hpp"
 #include "ncbridge/common/error.hpp"
 #include "rs274ngc/reader.hpp"
@@ -14,16 +15,6 @@ using namespace canonical;
 namespace {
 constexpr std::uint32_t bit(StatementKind k) { return 1u << static_cast<unsigned>(k); }
 constexpr int kMaxCallDepth = 200;
-
-bool iequals_prefix(std::string_view text, std::string_view prefix) {
-  if (text.size() < prefix.size()) return false;
-  for (std::size_t i = 0; i < prefix.size(); ++i) {
-    char c = text[i];
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-    if (c != prefix[i]) return false;
-  }
-  return true;
-}
 }  // namespace
 
 ControlFlowRunner::ControlFlowRunner(const Options& options, Sink& sink)
@@ -31,8 +22,9 @@ ControlFlowRunner::ControlFlowRunner(const Options& options, Sink& sink)
   params_.set_computed(&executor_);
 }
 
+// Every error names a line and a column: before the first line (an empty file) it is line 1.
 void ControlFlowRunner::fail(std::uint32_t column, const std::string& message) const {
-  throw InputError({file_name(), line_, column}, message);
+  throw InputError({file_name(), line_ == 0 ? 1 : line_, column == 0 ? 1 : column}, message);
 }
 
 double ControlFlowRunner::eval(ExprRef ref) const { return evaluate(block_, ref, params_, file_name()); }
@@ -67,7 +59,7 @@ void ControlFlowRunner::seek(std::uint32_t file, std::uint64_t offset, std::uint
   current_file_ = file;
   if (!files_[file].source) {
     files_[file].source = open_text_file(files_[file].name);
-    if (!files_[file].source) fail(0, "Unable to reopen file " + files_[file].name);
+    if (!files_[file].source) fail(call_column_, "Unable to reopen file " + files_[file].name);
   }
   files_[file].source->seek(offset);
   line_ = line_before;
@@ -96,9 +88,13 @@ void ControlFlowRunner::run(std::unique_ptr<TextSource> source, const std::strin
   for (;;) {
     if (!read_line(false)) {
       executor_.end_of_file();
-      if (!frames_.empty()) fail(0, "File ended inside subroutine (missing endsub)");
-      if (options_.require_program_end) {
+      if (!frames_.empty()) fail(1, "File ended inside subroutine (missing endsub)");
+      if (options_.require_program_end || options_.strict) {
         throw InputError({file_name(), line_, 1}, "File ended with no percent sign or program end");
+      }
+      if (options_.warning) {
+        options_.warning({file_name(), line_, 1}, "File ended with no percent sign or program end: the program ends "
+                                                  "here, as LinuxCNC ends it after running every block");
       }
       return;
     }
@@ -145,64 +141,58 @@ bool ControlFlowRunner::run_block() {
   }
   assemble_command(block_, values_.data(), file_name(), command_);
 
-  // (DEBUG,...) prints a message with parameter values substituted; other active comments
-  // (PRINT, LOG...) have no canonical call.
-  if (!command_.comment.empty() && !command_.comment_is_message) {
-    std::string_view text = command_.comment;
-    while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-    if (iequals_prefix(text, "debug,") && params_.numbered(5599) == 0.0) {
-      command_.comment = {};
-    } else if (iequals_prefix(text, "debug,")) {
-      message_text_.clear();
-      std::string_view rest = text.substr(6);
-      for (std::size_t i = 0; i < rest.size(); ++i) {
-        if (rest[i] == '#') {
-          std::size_t j = i + 1;
-          std::optional<double> value;
-          if (j < rest.size() && rest[j] == '<') {
-            std::size_t close = rest.find('>', j);
-            if (close != std::string_view::npos) {
-              std::string name;
-              for (char c : rest.substr(j + 1, close - j - 1)) {
-                if (c == ' ') continue;
-                name.push_back((c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c);
-              }
-              value = params_.named(name);
-              if (value) i = close;
-            }
-          } else {
-            int number = 0;
-            while (j < rest.size() && rest[j] >= '0' && rest[j] <= '9' && number < 100000) {
-              number = number * 10 + (rest[j] - '0');
-              ++j;
-            }
-            if (j > i + 1 && Parameters::valid_number(number)) {
-              value = params_.numbered(number);
-              i = j - 1;
-            }
-          }
-          if (value) {
-            char buf[64];
-            std::snprintf(buf, sizeof buf, "%f", *value);
-            message_text_ += buf;
-            continue;
-          }
-        }
-        message_text_.push_back(rest[i]);
-      }
-      command_.comment = message_text_;
-      command_.comment_is_message = true;
-    } else if (iequals_prefix(text, "print,") || iequals_prefix(text, "log,") ||
-               iequals_prefix(text, "logopen,") || iequals_prefix(text, "logappend,") ||
-               iequals_prefix(text, "logclose")) {
-      command_.comment = {};
-    }
-  }
+  if (!command_.comment.empty() && !command_.comment_is_message) run_active_comment();
   if (executor_.execute(command_, source, file_name())) {
     finish_after_end();
     return true;
   }
   return false;
+}
+
+// LinuxCNC's active comments: DEBUG (a MESSAGE while #5599 > 0), PRINT, LOG, LOGOPEN,
+// LOGAPPEND, LOGCLOSE, ABORT (an error with the text).
+void ControlFlowRunner::run_active_comment() {
+  using Action = BlockCommand::CommentAction;
+  std::string_view rest;
+  const ActiveComment kind = classify_comment(command_.comment, rest);
+  switch (kind) {
+    case ActiveComment::None:
+      return;
+    case ActiveComment::LogOpen:
+    case ActiveComment::LogAppend:
+      command_.comment = rest;  // the file name as written
+      command_.comment_action = kind == ActiveComment::LogOpen ? Action::LogOpen : Action::LogAppend;
+      return;
+    case ActiveComment::LogClose:
+      command_.comment_action = Action::LogClose;
+      return;
+    default:
+      break;
+  }
+  message_text_ = expand_comment_parameters(rest, params_);
+  command_.comment = message_text_;
+  switch (kind) {
+    case ActiveComment::Debug:
+      if (params_.numbered(5599) > 0.0) {
+        command_.comment_is_message = true;
+      } else {
+        command_.comment_action = Action::Nothing;
+      }
+      return;
+    case ActiveComment::Print: command_.comment_action = Action::Print; return;
+    case ActiveComment::Log: command_.comment_action = Action::Log; return;
+    case ActiveComment::Abort: {
+      std::uint32_t column = 1;
+      for (const auto& c : block_.comments) {
+        if (c.kind == CommentText::Kind::Plain) column = c.column;
+      }
+      std::string_view text = message_text_;
+      while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+      fail(column, text.empty() ? std::string("(ABORT) in the program") : std::string(text));
+    }
+    default:
+      return;
+  }
 }
 
 void ControlFlowRunner::finish_after_end() {
@@ -410,7 +400,7 @@ void ControlFlowRunner::call(const std::string& label) {
     if (!skip_to(label, bit(StatementKind::Sub))) {
       current_file_ = caller_file;
       line_ = caller_line;
-      fail(0, "Subroutine file " + candidate.string() + " does not define o<" + label + "> sub");
+      fail(call_column_, "Subroutine file " + candidate.string() + " does not define o<" + label + "> sub");
     }
     subs_[label] = SubDefinition{current_file_, next_offset_, line_};
     return;

@@ -70,6 +70,7 @@ class ControlFlowRunner {
   void call(const std::string& label);
   void do_return();
   void finish_after_end();
+  void run_active_comment();
   std::uint32_t open_file(const std::filesystem::path& path);
   const std::string& file_name() const { return files_[current_file_].name; }
 

@@ -21,8 +21,9 @@ Executor::Executor(const Options& options, Parameters& parameters, Sink& sink)
 
 Executor::~Executor() = default;
 
+// Every error names a line and a column; where no word is to blame, the block's first column.
 void Executor::fail(std::uint32_t column, const std::string& message) const {
-  throw InputError({file_ ? *file_ : std::string(), line_, column}, message);
+  throw InputError({file_ ? *file_ : std::string(), line_ == 0 ? 1 : line_, column == 0 ? 1 : column}, message);
 }
 
 void Executor::warn(std::uint32_t column, const std::string& message) const {
@@ -146,7 +147,7 @@ bool Executor::execute(const BlockCommand& b, const Source& source, const std::s
   check_block(b);
 
   // STEP 1: comment or message
-  if (!b.comment.empty() || b.comment_is_message) do_comment(b);
+  if (!b.comment.empty() || b.comment_is_message || b.comment_action != BlockCommand::CommentAction::Comment) do_comment(b);
   // STEP 2: spindle mode, feed mode, F, S, T
   if (b.g[kGSpindleMode] != -1) do_spindle_mode(b, b.g[kGSpindleMode]);
   if (b.g[kGFeedMode] != -1) do_feed_mode(b.g[kGFeedMode]);
@@ -158,19 +159,21 @@ bool Executor::execute(const BlockCommand& b, const Source& source, const std::s
   if (b.m[kMSpindle] != -1) do_spindle(b);
   if (b.m[kMCoolant] != -1) do_coolant(b);
   if (b.m[kMOverride] != -1) do_overrides(b);
+  if (b.m[kMInput] != -1) do_wait_on_input(b);
   // STEP 4: G codes
   int g0 = b.g[kGNonModal];
   if (g0 == 40) do_dwell(b);
-  if (b.g[kGPlane] != -1) do_plane(b.g[kGPlane]);
+  if (b.g[kGPlane] != -1) do_plane(b, b.g[kGPlane]);
   if (b.g[kGUnits] != -1) do_units(b.g[kGUnits]);
   if (b.g[kGCutterComp] != -1) do_cutter_comp(b, b.g[kGCutterComp]);
   if (b.g[kGToolLength] != -1) do_tool_length_offset(b, b.g[kGToolLength]);
-  if (b.g[kGCoordSystem] != -1) do_coordinate_system(b.g[kGCoordSystem]);
+  if (b.g[kGCoordSystem] != -1) do_coordinate_system(b.g[kGCoordSystem], b.g_column[kGCoordSystem]);
   if (b.g[kGControl] != -1) do_control_mode(b, b.g[kGControl]);
   if (b.g[kGDistance] != -1) do_distance_mode(b.g[kGDistance]);
   if (b.g[kGArcDistance] != -1) do_distance_mode(b.g[kGArcDistance]);
   if (b.g[kGRetract] != -1) do_retract_mode(b.g[kGRetract]);
   switch (g0) {
+    case 53: nurbs_end(b); break;
     case 100: do_g10(b); break;
     case 280: case 281: case 300: case 301: do_home(b, g0); break;
     case 520: case 920: case 921: case 922: case 923: do_axis_offsets(b, g0); break;
@@ -216,7 +219,10 @@ void Executor::check_block(const BlockCommand& b) {
   if (motion == 800 && axes && !g0_uses_axes) {
     fail(b.g_column[kGMotion], "Cannot use axis values with g80");
   }
-  if (motion == -1 && axes && !g0_uses_axes && s_.motion == 800) {
+  if (g0 == 53 && motion != 52 && motion != -1) {
+    fail(b.g_column[kGNonModal], "Between G5.2 and G5.3 codes, only additional G5.2 codes are allowed.");
+  }
+  if (motion == -1 && axes && !g0_uses_axes && (s_.motion == 800 || s_.motion == -1)) {
     fail(b.has_polar() ? b.polar_column() : 0, "Cannot use axis values without a g code that uses them");
   }
   if (g0 == 530 && motion != 0 && motion != 10 && !(motion == -1 && (s_.motion == 0 || s_.motion == 10))) {
@@ -224,12 +230,13 @@ void Executor::check_block(const BlockCommand& b) {
   }
   if (b.has('p') && b.g[kGNonModal] != 40 && b.g[kGNonModal] != 100 && b.g[kGControl] != 640 &&
       motion != 740 && motion != 820 && motion != 840 && motion != 860 && motion != 880 && motion != 890 &&
-      motion != 20 && motion != 30 && b.m[kMOverride] == -1 && b.m[kMSpindle] != 19 &&
-      !(motion == -1 && (s_.motion == 20 || s_.motion == 30 || s_.motion == 740 || s_.motion == 820 ||
+      motion != 20 && motion != 30 && motion != 50 && motion != 52 && b.m[kMOverride] == -1 && b.m[kMSpindle] != 19 &&
+      b.m[kMInput] != 66 &&
+      !(motion == -1 && (s_.motion == 20 || s_.motion == 30 || s_.motion == 52 || s_.motion == 740 || s_.motion == 820 ||
                          s_.motion == 840 || s_.motion == 860 || s_.motion == 880 || s_.motion == 890))) {
     fail(b.col('p'), "P word with no G code or M code that uses it");
   }
-  if (b.has('e')) fail(b.col('e'), "E word with no G70, G76, M66, M67 or M68 to use it");
+  if (b.has('e') && b.m[kMInput] != 66) fail(b.col('e'), "E word with no G70, G76, M66, M67 or M68 to use it");
   if (g0 == 40 && !b.has('p')) fail(b.g_column[kGNonModal], "Dwell time P word missing with G4");
 }
 
@@ -237,6 +244,16 @@ void Executor::do_comment(const BlockCommand& b) {
   if (b.comment_is_message) {
     emit(Message{std::string(b.comment)});
     return;
+  }
+  using Action = BlockCommand::CommentAction;
+  switch (b.comment_action) {
+    case Action::Comment: break;
+    case Action::Print: emit(Print{std::string(b.comment)}); return;
+    case Action::Log: emit(Log{std::string(b.comment)}); return;
+    case Action::LogOpen: emit(LogOpen{std::string(b.comment)}); return;
+    case Action::LogAppend: emit(LogAppend{std::string(b.comment)}); return;
+    case Action::LogClose: emit(LogClose{}); return;
+    case Action::Nothing: return;
   }
   std::string_view text = b.comment;
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
@@ -282,11 +299,11 @@ void Executor::do_dwell(const BlockCommand& b) {
   emit(Dwell{p});
 }
 
-void Executor::do_plane(int g) {
+void Executor::do_plane(const BlockCommand& b, int g) {
   Plane p = g == 170 ? Plane::XY : g == 180 ? Plane::XZ : g == 190 ? Plane::YZ
           : g == 171 ? Plane::UV : g == 181 ? Plane::UW : Plane::VW;
   if (s_.comp_side != Side::Off && p != s_.plane) {
-    fail(0, "Cannot change planes with cutter radius compensation on");
+    fail(b.g_column[kGPlane], "Cannot change planes with cutter radius compensation on");
   }
   s_.plane = p;
   emit(SelectPlane{p});
@@ -393,6 +410,27 @@ void Executor::do_overrides(const BlockCommand& b) {
       break;
     default: break;
   }
+}
+
+// M66: wait on a digital (P) or analog (E) input. No canonical call: the machine waits. Without a
+// machine, the input reads as rs274's simulation has it: a digital input as #5399 was (0 or 1),
+// an analog one as #5399 unchanged.
+void Executor::do_wait_on_input(const BlockCommand& b) {
+  const std::uint32_t col = b.m_column[kMInput];
+  const bool digital = b.has('p'), analog = b.has('e');
+  const int wait_type = b.has('l') ? nearest_int(b.get('l')) : 0;
+  const double timeout = b.has('q') ? b.get('q') : -1.0;
+  if (digital && analog) fail(col, "Invalid to select both a digital and an analog input with M66");
+  if (timeout <= 0 && b.has('l') && wait_type > 0) fail(col, "Zero timeout with wait type != immediate return");
+  if (analog && b.has('l') && wait_type != 0) fail(col, "Can't select analog input with wait type != immediate return");
+  if ((digital && nearest_int(b.get('p')) < 0) || (analog && nearest_int(b.get('e')) < 0) || (!digital && !analog)) {
+    fail(col, "Need to have either a valid P or a valid E word with M66");
+  }
+  if (s_.comp_side != Side::Off) {
+    fail(col, digital ? "Cannot wait for digital input with cutter radius compensation on"
+                      : "Cannot wait for analog input with cutter radius compensation on");
+  }
+  if (digital) params_.set_numbered(5399, params_.numbered(5399) != 0.0 ? 1.0 : 0.0);
 }
 
 void Executor::do_coolant(const BlockCommand& b) {

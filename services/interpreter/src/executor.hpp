@@ -73,13 +73,14 @@ class Executor final : public ComputedParameters {
   void do_feed_rate(const BlockCommand& b);
   void do_speed(const BlockCommand& b);
   void do_dwell(const BlockCommand& b);
-  void do_plane(int g);
+  void do_plane(const BlockCommand& b, int g);
   void do_units(int g);
   void do_control_mode(const BlockCommand& b, int g);
   void do_distance_mode(int g);
   void do_retract_mode(int g);
   void do_overrides(const BlockCommand& b);
   void do_coolant(const BlockCommand& b);
+  void do_wait_on_input(const BlockCommand& b);
   void do_cutter_comp(const BlockCommand& b, int g);
   double comp_radius_of_tool(const BlockCommand& b, int g);
 
@@ -101,7 +102,7 @@ class Executor final : public ComputedParameters {
   const ToolEntry* tool_entry(int number) const { return number == 0 ? nullptr : tools_.find(number); }
 
   // offsets.cpp
-  void do_coordinate_system(int g);
+  void do_coordinate_system(int g, std::uint32_t column);
   void do_g10(const BlockCommand& b);
   void do_g10_tool(const BlockCommand& b, int l);
   void do_home(const BlockCommand& b, int g);
@@ -123,6 +124,14 @@ class Executor final : public ComputedParameters {
 
   // arcs.cpp
   void arc(const BlockCommand& b, int motion, const canonical::Pose& end);
+
+  // splines.cpp
+  void spline(const BlockCommand& b, int motion);
+  void nurbs_point(const BlockCommand& b);
+  void nurbs_end(const BlockCommand& b);
+
+  // probing.cpp
+  void probe(const BlockCommand& b, int motion);
 
   // canned_cycles.cpp
   void canned_cycle(const BlockCommand& b, int motion);
@@ -189,6 +198,11 @@ class Executor final : public ComputedParameters {
   std::uint32_t comp_column_ = 0;  // column of the block's motion code, for comp errors
   bool comp_moved_ = false;        // a move was made with compensation on (radius > 0)
   bool arc_not_allowed_ = false;   // just after G40: the next move must be straight
+
+  // G5.2 control points so far and the curve's order (LinuxCNC keeps them outside the modal
+  // state: M70-M73 do not save them).
+  std::vector<canonical::NurbsControlPoint> nurbs_points_;
+  int nurbs_order_ = 3;
 };
 
 }  // namespace ncbridge::interpreter

@@ -14,7 +14,8 @@ constexpr double kEqualTolerance = 1e-4;
 
 class Evaluator {
  public:
-  Evaluator(const Block& b, const Parameters& p, const std::string& f) : b_(b), p_(p), f_(f) {}
+  Evaluator(const Block& b, const Parameters& p, const std::string& f, const VacantTest* vacant = nullptr)
+      : b_(b), p_(p), f_(f), vacant_(vacant) {}
 
   [[noreturn]] void fail(const ExprNode& n, const std::string& message) const {
     throw InputError({f_, b_.line, n.column}, message);
@@ -22,6 +23,7 @@ class Evaluator {
 
   int number_of(const ExprNode& n) const {
     double v = eval(n.a);
+    if (vacant_ != nullptr && v == 0.0) return 0;  // #0: always vacant
     if (!Parameters::valid_number(v)) fail(n, "Parameter number out of range");
     return static_cast<int>(std::lround(v));
   }
@@ -30,7 +32,11 @@ class Evaluator {
     const ExprNode& n = b_.nodes[ref];
     switch (n.op) {
       case ExprOp::Number: return n.value;
-      case ExprOp::Parameter: return p_.numbered(number_of(n));
+      case ExprOp::Parameter: {
+        const int number = number_of(n);
+        if (vacant_ != nullptr && (*vacant_)(number)) return 0.0;
+        return p_.numbered(number);
+      }
       case ExprOp::NamedParameter: {
         auto name = b_.name(n.name_begin, n.name_length);
         auto v = p_.named(name);
@@ -84,8 +90,15 @@ class Evaluator {
       }
       case ExprOp::Plus: return a + b;
       case ExprOp::Minus: return a - b;
-      case ExprOp::Eq: return std::fabs(a - b) < kEqualTolerance ? 1.0 : 0.0;
-      case ExprOp::Ne: return std::fabs(a - b) >= kEqualTolerance ? 1.0 : 0.0;
+      case ExprOp::Eq:
+      case ExprOp::Ne: {
+        bool equal = std::fabs(a - b) < kEqualTolerance;
+        if (vacant_ != nullptr) {
+          const bool va = is_vacant(n.a), vb = is_vacant(n.b);
+          if (va || vb) equal = va && vb;
+        }
+        return (n.op == ExprOp::Eq) == equal ? 1.0 : 0.0;
+      }
       case ExprOp::Gt: return a > b ? 1.0 : 0.0;
       case ExprOp::Ge: return a >= b ? 1.0 : 0.0;
       case ExprOp::Lt: return a < b ? 1.0 : 0.0;
@@ -98,16 +111,32 @@ class Evaluator {
     fail(n, "Unknown operation in expression");
   }
 
+  bool is_vacant(ExprRef ref) const {
+    const ExprNode& n = b_.nodes[ref];
+    return vacant_ != nullptr && n.op == ExprOp::Parameter && (*vacant_)(number_of(n));
+  }
+
  private:
   const Block& b_;
   const Parameters& p_;
   const std::string& f_;
+  const VacantTest* vacant_;
 };
 
 }  // namespace
 
 double evaluate(const Block& block, ExprRef ref, const Parameters& parameters, const std::string& file) {
   return Evaluator(block, parameters, file).eval(ref);
+}
+
+double evaluate(const Block& block, ExprRef ref, const Parameters& parameters, const std::string& file,
+                const VacantTest& vacant) {
+  return Evaluator(block, parameters, file, &vacant).eval(ref);
+}
+
+bool vacant_reference(const Block& block, ExprRef ref, const Parameters& parameters, const std::string& file,
+                      const VacantTest& vacant) {
+  return Evaluator(block, parameters, file, &vacant).is_vacant(ref);
 }
 
 int parameter_number(const Block& block, ExprRef ref, const Parameters& parameters, const std::string& file) {

@@ -159,6 +159,19 @@ void Executor::do_motion(const BlockCommand& b, int motion, bool g53) {
     case 800:
       emit(Comment{"interpreter: motion mode set to none"});
       break;
+    case 50:
+    case 51:
+      spline(b, motion);
+      return;  // G5 and G5.1 leave the motion mode as it was
+    case 52:
+      nurbs_point(b);
+      return;
+    case 382:
+    case 383:
+    case 384:
+    case 385:
+      probe(b, motion);
+      return;
     default:
       if (is_canned_cycle(motion)) {
         canned_cycle(b, motion);

@@ -92,10 +92,10 @@ Pose Executor::current_in_system(int system) const {
   return p;
 }
 
-void Executor::do_coordinate_system(int g) {
+void Executor::do_coordinate_system(int g, std::uint32_t column) {
   int system = g == 540 ? 1 : g == 550 ? 2 : g == 560 ? 3 : g == 570 ? 4 : g == 580 ? 5 : g == 590 ? 6
              : g == 591 ? 7 : g == 592 ? 8 : 9;
-  if (s_.comp_side != Side::Off) fail(0, "Cannot change coordinate systems with cutter radius compensation on");
+  if (s_.comp_side != Side::Off) fail(column, "Cannot change coordinate systems with cutter radius compensation on");
   if (system == s_.coord_system) {
     emit(Comment{"interpreter: continuing to use same coordinate system"});
     return;

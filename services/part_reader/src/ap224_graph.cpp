@@ -350,10 +350,28 @@ void Graph::read_item(InstanceId id, double length_scale, Parameters& out) const
   const bool is_length = type.find("LENGTH_MEASURE") != std::string::npos || Graph::is(instance, "LENGTH_MEASURE_WITH_UNIT");
   const bool is_angle = type.find("PLANE_ANGLE_MEASURE") != std::string::npos || Graph::is(instance, "PLANE_ANGLE_MEASURE_WITH_UNIT");
   char buf[64];
+  // Plus/minus deviations of a qualified item, in the measure's own unit.
+  std::optional<std::pair<double, double>> deviations;
+  if (const auto* q = instance.record("QUALIFIED_REPRESENTATION_ITEM"); q && !q->attributes.empty() && q->attributes[0].is_list()) {
+    for (const auto& v : q->attributes[0].as_list()) {
+      const auto* r = v.reference_if();
+      if (!r) continue;
+      const auto& qi = at(r->id);
+      const auto* su = qi.record("STANDARD_UNCERTAINTY");
+      if (!su || su->attributes.size() < 3) continue;
+      const std::string which = text(qi, *su, 0);
+      const double amount = number(qi, su->attributes[2]);
+      if (!deviations) deviations.emplace(0.0, 0.0);
+      if (which == "upper limit") deviations->first = amount;
+      else if (which == "lower limit") deviations->second = amount;
+    }
+  }
   if (is_length) {
-    const double mm = raw * (unit->is_unset() ? length_scale : length_unit_mm(reference(instance, *unit)));
+    const double scale = unit->is_unset() ? length_scale : length_unit_mm(reference(instance, *unit));
+    const double mm = raw * scale;
     if (!std::isfinite(mm)) fail(id, "a length that is not finite");
     out.lengths[name] = mm;
+    if (deviations) out.tolerances[name] = {deviations->first * scale, deviations->second * scale};
     std::snprintf(buf, sizeof buf, "%.10g mm", mm);
   } else if (is_angle) {
     const double deg = raw * (unit->is_unset() ? 1.0 : angle_unit_degrees(reference(instance, *unit)));

@@ -27,6 +27,7 @@ struct Parameters {
   std::map<std::string, double> angles;                         // degrees
   std::map<std::string, double> counts;                         // unitless measures
   std::map<std::string, std::string> texts;                     // descriptive items
+  std::map<std::string, std::pair<double, double>> tolerances;  // a measure's upper and lower deviation (mm / degrees)
   std::map<std::string, stepnc::Direction> directions;          // direction_shape_representation, by its name ('' if none)
   std::vector<std::pair<std::string, std::string>> listing;     // every item as "name" = "value unit", in file order
 };

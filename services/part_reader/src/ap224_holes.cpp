@@ -28,7 +28,8 @@ ReadFeature read_round_hole(const Graph& g, InstanceId id) {
 
   const Component* profile = find_component(g, components, {"CIRCULAR_CLOSED_PROFILE"}, "diameter occurrence");
   if (!profile) g.fail(id, "the hole has no circular_closed_profile (its diameter)");
-  const double diameter = length_of(g, profile->id, g.parameters(profile->id), "diameter", id);
+  const Parameters profile_parameters = g.parameters(profile->id);
+  const double diameter = length_of(g, profile->id, profile_parameters, "diameter", id);
   if (!(diameter > 0)) g.fail(id, "the hole's diameter must be positive");
 
   const Component* path = find_component(g, components, {"PATH_FEATURE_COMPONENT"}, "hole depth occurrence");
@@ -49,6 +50,7 @@ ReadFeature read_round_hole(const Graph& g, InstanceId id) {
   f.depth = depth;
   f.diameter = diameter;
   f.outline = Outline::Circle;
+  if (auto t = profile_parameters.tolerances.find("diameter"); t != profile_parameters.tolerances.end()) f.diameter_tolerance = t->second;
 
   if (const Component* bottom = find_component(g, components, {"HOLE_BOTTOM"}, "bottom condition occurrence")) {
     const auto text = g.aspect_text(g.at(bottom->id));

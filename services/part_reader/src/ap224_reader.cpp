@@ -38,9 +38,10 @@ bool is_component(const Graph& g, InstanceId id) {
   return false;
 }
 
-void take(ReadFeature&& read, Part& part, std::vector<std::pair<InstanceId, std::size_t>>* holes, InstanceId id) {
+void take(const Graph& g, ReadFeature&& read, Part& part, std::vector<std::pair<InstanceId, std::size_t>>* holes, InstanceId id) {
   for (auto& w : read.warnings) part.warnings.push_back(std::move(w));
   if (read.feature) {
+    read.feature->line = g.where(id).line;
     if (holes) holes->emplace_back(id, part.features.size());
     part.features.push_back(std::move(*read.feature));
   }
@@ -81,19 +82,19 @@ Part read_ap224(const step_writer::part21::Graph& graph, const std::string& file
   for (const auto& instance : graph.instances()) {
     const InstanceId id = instance.id;
     if (Graph::is(instance, "ROUND_HOLE")) {
-      take(read_round_hole(g, id), part, &holes, id);
+      take(g, read_round_hole(g, id), part, &holes, id);
     } else if (Graph::is(instance, "COMPOSITE_HOLE")) {
       composites.push_back(id);
     } else if (Graph::is(instance, "POCKET")) {
-      take(read_pocket(g, id), part, nullptr, id);
+      take(g, read_pocket(g, id), part, nullptr, id);
     } else if (Graph::is(instance, "SLOT")) {
-      take(read_slot(g, id), part, nullptr, id);
+      take(g, read_slot(g, id), part, nullptr, id);
     } else if (Graph::is(instance, "STEP")) {
-      take(read_step(g, id, part.stock), part, nullptr, id);
+      take(g, read_step(g, id, part.stock), part, nullptr, id);
     } else if (Graph::is(instance, "FLAT_FACE")) {
-      take(read_flat_face(g, id, part.stock), part, nullptr, id);
+      take(g, read_flat_face(g, id, part.stock), part, nullptr, id);
     } else if (Graph::is(instance, "OUTSIDE_PROFILE")) {
-      take(read_outside_profile(g, id, part.stock), part, nullptr, id);
+      take(g, read_outside_profile(g, id, part.stock), part, nullptr, id);
     } else {
       for (auto e : kTurning) {
         if (Graph::is(instance, e)) part.listed.push_back(list_feature(g, id, std::string(e), "turning feature: not planned for milling"));

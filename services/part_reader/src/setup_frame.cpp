@@ -45,6 +45,28 @@ stepnc::Axis2Placement3d SetupFrame::placement(const stepnc::Axis2Placement3d& p
   return {point(p.location), direction(p.axis), direction(p.ref_direction)};
 }
 
+void move_part(Part& part, const std::array<double, 3>& offset) {
+  auto move = [&](stepnc::CartesianPoint& p) {
+    p.x += offset[0];
+    p.y += offset[1];
+    p.z += offset[2];
+  };
+  for (auto& f : part.features) move(f.placement.location);
+  if (part.stock) move(part.stock->placement.location);
+  for (auto& v : part.footprint) {
+    v.x += offset[0];
+    v.y += offset[1];
+  }
+  part.top_z += offset[2];
+  part.bottom_z += offset[2];
+  if (part.bounds) {
+    for (int i = 0; i < 3; ++i) {
+      part.bounds->min[static_cast<std::size_t>(i)] += offset[static_cast<std::size_t>(i)];
+      part.bounds->max[static_cast<std::size_t>(i)] += offset[static_cast<std::size_t>(i)];
+    }
+  }
+}
+
 std::optional<SetupUp> setup_facing(const stepnc::Direction& d) {
   const double n = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
   if (n == 0) return std::nullopt;

@@ -4,10 +4,12 @@
 // cannot hold (bosses, approach strategies, other feature kinds) is reported as a warning; a
 // file without a PROJECT, or with a reference to the wrong kind of entity, is an InputError
 // naming the instance's line.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <optional>
 
 #include "ncbridge/step_writer/part21_reader.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
@@ -25,7 +27,7 @@ class Cc1Reader {
 
   StepncReadResult read() {
     const auto projects = g_.ids_of("PROJECT");
-    if (projects.empty()) throw InputError({file_, 0, 0}, "no PROJECT instance: not an ISO 14649 program");
+    if (projects.empty()) throw InputError({file_, 1, 1}, "no PROJECT instance: not an ISO 14649 program");
     const Instance& project = instance(projects.front());
     if (projects.size() > 1) warn(project, "more than one PROJECT: reading the first");
     auto& p = result_.project;
@@ -40,7 +42,7 @@ class Cc1Reader {
     const Instance& workplan = expect(reference(project, 1), {"WORKPLAN"}, project);
     p.main_workplan.its_id = text(workplan, 0);
     if (!attr(workplan, 3).is_unset()) p.setup = setup(expect(attr(workplan, 3).as_reference(), {"SETUP"}, workplan));
-    for (const Value& v : list(workplan, 1)) executable(instance(reference_in(v, workplan)));
+    for (const Value& v : list(workplan, 1)) executable(instance(reference_in(v, workplan), &workplan));
     return std::move(result_);
   }
 
@@ -58,9 +60,15 @@ class Cc1Reader {
     d.message = std::move(message);
     result_.warnings.push_back(std::move(d));
   }
-  const Instance& instance(InstanceId id) const {
+  // The instance `id`; a reference to one the file lacks is an error where the referring
+  // instance (`from`) is.
+  const Instance& instance(InstanceId id, const Instance* from = nullptr) const {
     const Instance* i = g_.find(id);
-    if (!i || i->records.empty()) throw InputError({file_, 0, 0}, "reference to #" + std::to_string(id) + ", which the file does not define");
+    if (!i || i->records.empty()) {
+      const std::string message = "reference to #" + std::to_string(id) + ", which the file does not define";
+      if (from) fail_complex(*from, message);
+      throw InputError({file_, 1, 1}, message);
+    }
     return *i;
   }
   const Value& attr(const Instance& i, std::size_t n) const {
@@ -104,7 +112,7 @@ class Cc1Reader {
     return v.as_list();
   }
   const Instance& expect(InstanceId id, std::initializer_list<std::string_view> entities, const Instance& from) const {
-    const Instance& i = instance(id);
+    const Instance& i = instance(id, &from);
     for (auto e : entities) {
       if (!i.complex && i.entity() == e) return i;
     }
@@ -147,42 +155,207 @@ class Cc1Reader {
     for (const Value& v : list(i, 1)) l.points.push_back(point_ref(reference_in(v, i), i));
     return l;
   }
-  sn::TrimmedCircle trimmed_circle(const Instance& i) const {
-    const Instance& circle = expect(reference(i, 1), {"CIRCLE"}, i);
+  // A trim of a TRIMMED_CURVE: its point and its parameter, either of which may be missing
+  // (NIST's files trim by points only).
+  struct Trim {
+    std::optional<sn::CartesianPoint> point;
+    std::optional<double> parameter;
+  };
+  Trim trim(const Instance& i, std::size_t n) const {
+    Trim t;
+    for (const Value& v : list(i, n)) {
+      if (v.is_reference()) t.point = point_ref(v.as_reference(), i);
+      else t.parameter = v.as_number();
+    }
+    if (!t.point && !t.parameter) fail(i, "a trim needs a point or a PARAMETER_VALUE");
+    return t;
+  }
+  // Local coordinates of a point in a placement: along ref_direction, axis x ref_direction, axis.
+  static sn::CartesianPoint local(const sn::Axis2Placement3d& a, const sn::CartesianPoint& p) {
+    const double dx = p.x - a.location.x, dy = p.y - a.location.y, dz = p.z - a.location.z;
+    const sn::Direction& z = a.axis;
+    const sn::Direction& x = a.ref_direction;
+    const sn::Direction y{z.y * x.z - z.z * x.y, z.z * x.x - z.x * x.z, z.x * x.y - z.y * x.x};
+    return {dx * x.x + dy * x.y + dz * x.z, dx * y.x + dy * y.y + dz * y.z, dx * z.x + dy * z.y + dz * z.z};
+  }
+  static sn::CartesianPoint global(const sn::Axis2Placement3d& a, double lx, double ly, double lz) {
+    const sn::Direction& z = a.axis;
+    const sn::Direction& x = a.ref_direction;
+    const sn::Direction y{z.y * x.z - z.z * x.y, z.z * x.x - z.x * x.z, z.x * x.y - z.y * x.x};
+    return {a.location.x + lx * x.x + ly * y.x + lz * z.x, a.location.y + lx * x.y + ly * y.y + lz * z.y,
+            a.location.z + lx * x.z + ly * y.z + lz * z.z};
+  }
+  sn::TrimmedCircle trimmed_circle(const Instance& i, const Instance& circle) const {
     sn::TrimmedCircle t;
     t.position = placement(reference(circle, 1), circle);
     t.radius = number(circle, 2);
-    auto trim = [&](std::size_t n, sn::CartesianPoint& pt, double& parameter) {
-      bool have_point = false, have_parameter = false;
-      for (const Value& v : list(i, n)) {
-        if (v.is_reference()) {
-          pt = point_ref(v.as_reference(), i);
-          have_point = true;
+    auto resolve = [&](const Trim& tr, sn::CartesianPoint& pt, double& parameter) {
+      constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+      if (tr.point) {
+        pt = *tr.point;
+        if (tr.parameter) {
+          parameter = *tr.parameter;
         } else {
-          parameter = v.as_number();
-          have_parameter = true;
+          const sn::CartesianPoint l = local(t.position, pt);
+          parameter = std::atan2(l.y, l.x) * kDegrees;
+          if (parameter < 0) parameter += 360.0;
         }
+      } else {
+        parameter = *tr.parameter;
+        pt = global(t.position, t.radius * std::cos(parameter / kDegrees), t.radius * std::sin(parameter / kDegrees), 0);
       }
-      if (!have_point || !have_parameter) fail(i, "each trim needs a point and a PARAMETER_VALUE");
     };
-    trim(2, t.trim_1_point, t.trim_1_parameter);
-    trim(3, t.trim_2_point, t.trim_2_parameter);
+    resolve(trim(i, 2), t.trim_1_point, t.trim_1_parameter);
+    resolve(trim(i, 3), t.trim_2_point, t.trim_2_parameter);
     t.sense_agreement = flag(i, 4);
     return t;
   }
+  // NIST's HELIX(name, position, radius, pitch) (not in the schema's Part 42 subset) trimmed by
+  // two points: as a polyline within 0.001 mm of it, as the CC1 writer writes helices (docs/cc1.md).
+  sn::Polyline trimmed_helix(const Instance& i, const Instance& helix) const {
+    const sn::Axis2Placement3d a = placement(reference(helix, 1), helix);
+    const double radius = number(helix, 2), pitch = number(helix, 3);
+    const Trim t1 = trim(i, 2), t2 = trim(i, 3);
+    if (!t1.point || !t2.point) fail(i, "a trimmed HELIX needs its trims as points");
+    if (radius <= 0) fail(helix, "the radius must be positive");
+    const sn::CartesianPoint s = local(a, *t1.point), e = local(a, *t2.point);
+    constexpr double kPi = 3.14159265358979323846;
+    const double a0 = std::atan2(s.y, s.x), a1 = std::atan2(e.y, e.x);
+    const bool ccw = flag(i, 4);
+    double sweep;
+    if (pitch != 0 && std::fabs(e.z - s.z) > 1e-9) {
+      sweep = (e.z - s.z) / pitch * 2 * kPi;  // signed: + counter-clockwise about the axis
+      double miss = std::remainder(a0 + sweep - a1, 2 * kPi);
+      if (std::fabs(miss) * radius > 0.01) fail(i, "the trim points are not on the helix");
+      sweep -= miss;
+    } else {
+      sweep = ccw ? a1 - a0 : a0 - a1;
+      while (sweep <= 1e-12) sweep += 2 * kPi;
+      if (!ccw) sweep = -sweep;
+    }
+    constexpr double kChordTolerance = 0.001;  // mm
+    const double step = 2 * std::acos(std::max(-1.0, 1 - kChordTolerance / radius));
+    const double count = std::max(1.0, std::ceil(std::fabs(sweep) / step));
+    if (!(count <= 1e6)) fail(i, "a helix of more than a million chords of 0.001 mm");
+    const auto pieces = static_cast<std::size_t>(count);
+    sn::Polyline l;
+    l.points.push_back(*t1.point);
+    for (std::size_t k = 1; k < pieces; ++k) {
+      const double f = static_cast<double>(k) / static_cast<double>(pieces);
+      const double angle = a0 + sweep * f;
+      l.points.push_back(global(a, radius * std::cos(angle), radius * std::sin(angle), s.z + (e.z - s.z) * f));
+    }
+    l.points.push_back(*t2.point);
+    return l;
+  }
+  // A TRIMMED_CURVE appended to a curve: an arc of a CIRCLE; the piece of a LINE between its
+  // trims and a piece of a HELIX (both in NIST's explicit toolpaths) as polylines.
+  void append_trimmed(const Instance& i, sn::CompositeCurve& c) const {
+    const Instance& basis = expect(reference(i, 1), {"CIRCLE", "LINE", "HELIX"}, i);
+    if (basis.entity() == "CIRCLE") {
+      c.segments.emplace_back(trimmed_circle(i, basis));
+    } else if (basis.entity() == "HELIX") {
+      c.segments.emplace_back(trimmed_helix(i, basis));
+    } else {
+      const Trim t1 = trim(i, 2), t2 = trim(i, 3);
+      auto on_line = [&](const Trim& t) {
+        if (t.point) return *t.point;
+        const sn::CartesianPoint origin = point_ref(reference(basis, 1), basis);
+        const Instance& vector = expect(reference(basis, 2), {"VECTOR"}, basis);
+        const sn::Direction d = direction(reference(vector, 1), vector);
+        const double k = number(vector, 2) * *t.parameter;
+        return sn::CartesianPoint{origin.x + d.x * k, origin.y + d.y * k, origin.z + d.z * k};
+      };
+      c.segments.emplace_back(sn::Polyline{{on_line(t1), on_line(t2)}});
+    }
+  }
+  // B_SPLINE_CURVE_WITH_KNOTS, or the complex instance of it with RATIONAL_B_SPLINE_CURVE
+  // (and attribute-less supertypes): the only complex instance an ISO 14649 toolpath holds.
+  static bool is_bspline(const Instance& i) {
+    if (!i.complex) return i.entity() == "B_SPLINE_CURVE_WITH_KNOTS";
+    return i.record("B_SPLINE_CURVE") && i.record("B_SPLINE_CURVE_WITH_KNOTS") && i.record("RATIONAL_B_SPLINE_CURVE");
+  }
+  sn::BSplineCurve bspline(const Instance& i) const {
+    // The attributes of B_SPLINE_CURVE, then those of B_SPLINE_CURVE_WITH_KNOTS, then the weights.
+    std::vector<Value> a;
+    if (!i.complex) {
+      a = i.attributes();
+    } else {
+      static constexpr std::string_view kAllowed[] = {"BOUNDED_CURVE", "B_SPLINE_CURVE", "B_SPLINE_CURVE_WITH_KNOTS", "CURVE",
+                                                      "GEOMETRIC_REPRESENTATION_ITEM", "RATIONAL_B_SPLINE_CURVE",
+                                                      "REPRESENTATION_ITEM"};
+      for (const auto& r : i.records) {
+        if (std::find(std::begin(kAllowed), std::end(kAllowed), r.entity) == std::end(kAllowed)) {
+          fail_complex(i, "a complex B-spline curve with a " + r.entity + " part");
+        }
+      }
+      for (std::string_view part : {"B_SPLINE_CURVE", "B_SPLINE_CURVE_WITH_KNOTS", "RATIONAL_B_SPLINE_CURVE"}) {
+        const auto& attributes = i.record(part)->attributes;
+        a.insert(a.end(), attributes.begin(), attributes.end());
+      }
+    }
+    if (a.size() != (i.complex ? 10u : 9u)) fail_complex(i, "a B-spline curve with " + std::to_string(a.size()) + " attributes");
+    auto number_list = [&](const Value& v, const char* what) {
+      if (!v.is_list()) fail_complex(i, std::string(what) + " must be a list");
+      std::vector<double> out;
+      for (const Value& x : v.as_list()) {
+        if (!x.is_number()) fail_complex(i, std::string(what) + " must be numbers");
+        out.push_back(x.as_number());
+      }
+      return out;
+    };
+    sn::BSplineCurve b;
+    if (!a[1].is_integer()) fail_complex(i, "degree must be an integer");
+    const auto degree = a[1].as_integer();
+    if (degree < 1 || degree > 64) fail_complex(i, "degree " + std::to_string(degree) + " is not supported (1 to 64)");
+    b.degree = static_cast<int>(degree);
+    if (!a[2].is_list()) fail_complex(i, "control_points_list must be a list");
+    for (const Value& v : a[2].as_list()) b.control_points.push_back(point_ref(reference_in(v, i), i));
+    for (double m : number_list(a[6], "knot_multiplicities")) {
+      if (m != std::floor(m) || m < 0 || m > 1e6) fail_complex(i, "knot_multiplicities must be small whole numbers");
+      b.knot_multiplicities.push_back(static_cast<int>(m));
+    }
+    b.knots = number_list(a[7], "knots");
+    if (!a[8].is_enumeration()) fail_complex(i, "knot_spec must be an enumeration");
+    const std::string& spec = a[8].as_enumeration();
+    b.knot_spec = spec == "UNIFORM_KNOTS" ? sn::KnotType::UniformKnots
+                  : spec == "QUASI_UNIFORM_KNOTS" ? sn::KnotType::QuasiUniformKnots
+                  : spec == "PIECEWISE_BEZIER_KNOTS" ? sn::KnotType::PiecewiseBezierKnots
+                                                     : sn::KnotType::Unspecified;
+    if (i.complex) b.weights = number_list(a[9], "weights_data");
+    if (const std::string problem = sn::bspline_problem(b); !problem.empty()) fail_complex(i, "not a B-spline: " + problem);
+    return b;
+  }
+  [[noreturn]] void fail_complex(const Instance& at, const std::string& message) const {
+    throw InputError({file_, at.line, at.column},
+                     "#" + std::to_string(at.id) + " " + (at.complex ? std::string("(complex)") : at.entity()) + ": " + message);
+  }
+  // A curve of a toolpath: a B-spline (NURBS) curve, a POLYLINE, a TRIMMED_CURVE, or a
+  // COMPOSITE_CURVE of them.
   sn::CompositeCurve curve(InstanceId id, const Instance& from) const {
-    const Instance& i = expect(id, {"POLYLINE", "TRIMMED_CURVE", "COMPOSITE_CURVE"}, from);
+    const Instance& i = instance(id, &from);
     sn::CompositeCurve c;
+    if (is_bspline(i)) {
+      c.segments.emplace_back(bspline(i));
+      return c;
+    }
+    expect(id, {"POLYLINE", "TRIMMED_CURVE", "B_SPLINE_CURVE_WITH_KNOTS", "COMPOSITE_CURVE"}, from);
     if (i.entity() == "POLYLINE") {
       c.segments.emplace_back(polyline(i));
     } else if (i.entity() == "TRIMMED_CURVE") {
-      c.segments.emplace_back(trimmed_circle(i));
+      append_trimmed(i, c);
     } else {
       for (const Value& v : list(i, 1)) {
         const Instance& seg = expect(reference_in(v, i), {"COMPOSITE_CURVE_SEGMENT"}, i);
-        const Instance& parent = expect(reference(seg, 2), {"POLYLINE", "TRIMMED_CURVE"}, seg);
+        if (!flag(seg, 1)) fail(seg, "a segment reversed (same_sense .F.) is not read");
+        const InstanceId parent_id = reference(seg, 2);
+        if (is_bspline(instance(parent_id))) {
+          c.segments.emplace_back(bspline(instance(parent_id)));
+          continue;
+        }
+        const Instance& parent = expect(parent_id, {"POLYLINE", "TRIMMED_CURVE", "B_SPLINE_CURVE_WITH_KNOTS"}, seg);
         if (parent.entity() == "POLYLINE") c.segments.emplace_back(polyline(parent));
-        else c.segments.emplace_back(trimmed_circle(parent));
+        else append_trimmed(parent, c);
       }
     }
     return c;
@@ -197,7 +370,7 @@ class Cc1Reader {
     if (t.its_id.size() > 1 && t.its_id[0] == 'T' && std::isdigit(static_cast<unsigned char>(t.its_id[1]))) {
       t.number = std::atoi(t.its_id.c_str() + 1);
     }
-    const Instance& body = instance(reference(i, 1));
+    const Instance& body = instance(reference(i, 1), &i);
     static const std::map<std::string, sn::ToolBody, std::less<>> kBodies{
         {"FACEMILL", sn::ToolBody::Facemill}, {"ENDMILL", sn::ToolBody::Endmill},
         {"TAPERED_ENDMILL", sn::ToolBody::Endmill}, {"BALL_ENDMILL", sn::ToolBody::BallEndmill},
@@ -344,7 +517,7 @@ class Cc1Reader {
     Op op;
     machining_operation(i, op);
     if (!attr(i, 9).is_unset() || !attr(i, 10).is_unset()) warn(i, "approach/retract strategies are not kept");
-    if (!attr(i, 11).is_unset()) op.its_machining_strategy = strategy(instance(reference(i, 11)));
+    if (!attr(i, 11).is_unset()) op.its_machining_strategy = strategy(instance(reference(i, 11), &i));
     std::size_t n = 12;
     op.axial_cutting_depth = opt_number(i, n++);
     if (side) {
@@ -383,7 +556,7 @@ class Cc1Reader {
 
   std::optional<sn::OperationRef> operation(InstanceId id, const Instance& from) {
     if (auto it = operations_.find(id); it != operations_.end()) return it->second;
-    const Instance& i = instance(id);
+    const Instance& i = instance(id, &from);
     const std::string& e = i.entity();
     sn::Operation op;
     if (e == "FREEFORM_OPERATION") {
@@ -441,7 +614,7 @@ class Cc1Reader {
     const Instance& d = expect(id, {"TOLERANCED_LENGTH_MEASURE"}, from);
     sn::TolerancedLengthMeasure t;
     t.theoretical_size = number(d, 0);
-    const Instance& tol = instance(reference(d, 1));
+    const Instance& tol = instance(reference(d, 1), &d);
     if (tol.entity() == "PLUS_MINUS_VALUE") {
       t.upper_limit = number(tol, 0);
       t.lower_limit = number(tol, 1);
@@ -480,7 +653,7 @@ class Cc1Reader {
   void pocket(const Instance& i, Pocket& p) {
     if (!list(i, 5).empty()) warn(i, "bosses are not kept");
     p.slope = opt_number(i, 6);
-    const Instance& bottom = instance(reference(i, 7));
+    const Instance& bottom = instance(reference(i, 7), &i);
     if (bottom.entity() == "THROUGH_POCKET_BOTTOM_CONDITION") p.bottom_condition = sn::ThroughPocketBottomCondition{};
     else if (bottom.entity() == "PLANAR_POCKET_BOTTOM_CONDITION") p.bottom_condition = sn::PlanarPocketBottomCondition{};
     else warn(bottom, "pocket bottom " + bottom.entity() + " read as planar");
@@ -490,7 +663,7 @@ class Cc1Reader {
 
   std::optional<sn::FeatureRef> feature(InstanceId id, const Instance& from) {
     if (auto it = features_.find(id); it != features_.end()) return it->second;
-    const Instance& i = instance(id);
+    const Instance& i = instance(id, &from);
     auto common = [&](sn::MachiningFeature& f) {
       f.its_id = text(i, 0);
       f.feature_placement = placement(reference(i, 3), i);
@@ -505,7 +678,7 @@ class Cc1Reader {
       sn::RoundHole h;
       common(h);
       h.diameter = toleranced(reference(i, 5), i);
-      const Instance& bottom = instance(reference(i, 7));
+      const Instance& bottom = instance(reference(i, 7), &i);
       if (bottom.entity() == "THROUGH_BOTTOM_CONDITION") h.bottom_condition = sn::ThroughBottomCondition{};
       else if (bottom.entity() == "CONICAL_HOLE_BOTTOM") h.bottom_condition = sn::ConicalHoleBottom{number(bottom, 0)};
       else h.bottom_condition = sn::FlatHoleBottom{};
@@ -541,7 +714,7 @@ class Cc1Reader {
           {"FLAT_SLOT_END_TYPE", sn::SlotEndType::Flat}, {"LOOP_SLOT_END_TYPE", sn::SlotEndType::Loop},
           {"WOODRUFF_SLOT_END_TYPE", sn::SlotEndType::Woodruff}};
       for (const Value& v : list(i, 7)) {
-        const Instance& end = instance(reference_in(v, i));
+        const Instance& end = instance(reference_in(v, i), &i);
         auto k = kEnds.find(end.entity());
         if (k == kEnds.end()) fail(i, "refers to #" + std::to_string(end.id) + " " + end.entity() + ", expected a slot_end_type");
         s.end_conditions.push_back(k->second);
@@ -598,8 +771,22 @@ class Cc1Reader {
       r.its_secplane = plane(reference(i, 1), i);
       if (!attr(i, 2).is_unset()) r.its_toolpath = toolpath_list(reference(i, 2), i);
       result_.project.main_workplan.its_elements.emplace_back(std::move(r));
+    } else if (i.entity() == "WORKPIECE_PROBING") {
+      sn::WorkpieceProbing w;
+      w.its_id = text(i, 0);
+      w.its_secplane = plane(reference(i, 1), i);
+      if (!attr(i, 2).is_unset()) warn(i, "the toolpath of a workpiece probing is not kept");
+      const Instance& variable = expect(reference(i, 4), {"NC_VARIABLE"}, i);
+      w.measured_offset.its_name = text(variable, 0);
+      w.measured_offset.initial_value = opt_number(variable, 1);
+      w.start_position = placement(reference(i, 5), i);
+      expect(reference(i, 6), {"WORKPIECE"}, i);  // the project's workpiece
+      w.its_direction = direction(reference(i, 7), i);
+      w.expected_value = toleranced(reference(i, 8), i);
+      w.its_probe = text(expect(reference(i, 9), {"TOUCH_PROBE"}, i), 0);
+      result_.project.main_workplan.its_elements.emplace_back(std::move(w));
     } else {
-      warn(i, "executable " + i.entity() + " is not read (only workingsteps and rapid movements)");
+      warn(i, "executable " + i.entity() + " is not read (only workingsteps, rapid movements and workpiece probings)");
     }
   }
 
@@ -608,7 +795,7 @@ class Cc1Reader {
     w.its_id = text(i, 0);
     w.global_tolerance = opt_number(i, 2);
     if (!attr(i, 5).is_unset()) {
-      const Instance& b = instance(reference(i, 5));
+      const Instance& b = instance(reference(i, 5), &i);
       if (b.entity() == "BLOCK") {
         w.its_bounding_geometry = sn::Block{placement(reference(b, 1), b), number(b, 2), number(b, 3), number(b, 4)};
       } else {

@@ -71,6 +71,16 @@ std::string_view toolpath_type_name(sn::ToolpathType t) {
   return "TRAJECTORY_PATH";
 }
 
+std::string_view knot_type_name(sn::KnotType t) {
+  switch (t) {
+    case sn::KnotType::UniformKnots: return "UNIFORM_KNOTS";
+    case sn::KnotType::QuasiUniformKnots: return "QUASI_UNIFORM_KNOTS";
+    case sn::KnotType::PiecewiseBezierKnots: return "PIECEWISE_BEZIER_KNOTS";
+    case sn::KnotType::Unspecified: break;
+  }
+  return "UNSPECIFIED";
+}
+
 using Bits3 = std::array<std::uint64_t, 3>;
 Bits3 bits_of(double x, double y, double z) {
   using R = part21::RecentInstances<3>;
@@ -309,6 +319,63 @@ class Cc1Writer {
     s_.enumeration("PARAMETER");
     return s_.end();
   }
+  // B_SPLINE_CURVE_WITH_KNOTS; with weights, the complex instance of it and
+  // RATIONAL_B_SPLINE_CURVE (with the supertypes, which carry no attributes in this schema).
+  InstanceId bspline(const sn::BSplineCurve& b) {
+    if (const std::string problem = sn::bspline_problem(b); !problem.empty()) {
+      throw std::invalid_argument("write_stepnc: a B_SPLINE_CURVE_WITH_KNOTS that is no B-spline: " + problem);
+    }
+    polyline_points_.clear();
+    for (const auto& c : b.control_points) polyline_points_.push_back(point(c));
+    const bool closed = b.control_points.front() == b.control_points.back();
+    auto b_spline_curve = [&] {
+      s_.string("");
+      s_.integer(b.degree);
+      s_.refs(polyline_points_);
+      s_.enumeration("UNSPECIFIED");
+      s_.boolean(closed);
+      s_.unknown();
+    };
+    auto with_knots = [&] {
+      s_.open_list();
+      for (int m : b.knot_multiplicities) s_.integer(m);
+      s_.close_list();
+      s_.open_list();
+      for (double k : b.knots) s_.real(k);
+      s_.close_list();
+      s_.enumeration(knot_type_name(b.knot_spec));
+    };
+    if (b.weights.empty()) {
+      s_.begin("B_SPLINE_CURVE_WITH_KNOTS");
+      b_spline_curve();
+      with_knots();
+      return s_.end();
+    }
+    const InstanceId id = s_.begin_complex();
+    for (std::string_view empty : {"BOUNDED_CURVE"}) {
+      s_.record(empty);
+      s_.end_record();
+    }
+    s_.record("B_SPLINE_CURVE");
+    b_spline_curve();
+    s_.end_record();
+    s_.record("B_SPLINE_CURVE_WITH_KNOTS");
+    with_knots();
+    s_.end_record();
+    for (std::string_view empty : {"CURVE", "GEOMETRIC_REPRESENTATION_ITEM"}) {
+      s_.record(empty);
+      s_.end_record();
+    }
+    s_.record("RATIONAL_B_SPLINE_CURVE");
+    s_.open_list();
+    for (double w : b.weights) s_.real(w);
+    s_.close_list();
+    s_.end_record();
+    s_.record("REPRESENTATION_ITEM");
+    s_.end_record();
+    s_.end();
+    return id;
+  }
   InstanceId curve(const sn::CompositeCurve& c) {
     if (c.segments.size() == 1) {
       if (const auto* l = std::get_if<sn::Polyline>(&c.segments[0])) return polyline(*l);
@@ -317,7 +384,8 @@ class Cc1Writer {
     segments.clear();
     for (std::size_t i = 0; i < c.segments.size(); ++i) {
       const InstanceId parent = std::visit(Overload{[&](const sn::Polyline& l) { return polyline(l); },
-                                                    [&](const sn::TrimmedCircle& t) { return trimmed_circle(t); }},
+                                                    [&](const sn::TrimmedCircle& t) { return trimmed_circle(t); },
+                                                    [&](const sn::BSplineCurve& b) { return bspline(b); }},
                                            c.segments[i]);
       s_.begin("COMPOSITE_CURVE_SEGMENT");
       s_.enumeration(i + 1 == c.segments.size() ? "DISCONTINUOUS" : "CONTINUOUS");
@@ -714,6 +782,35 @@ class Cc1Writer {
     return s_.end();
   }
 
+  InstanceId write_executable(const sn::WorkpieceProbing& w) {
+    const InstanceId secplane = security_plane(w.its_secplane);
+    s_.begin("NC_VARIABLE");
+    s_.string(w.measured_offset.its_name);
+    s_.opt_real(w.measured_offset.initial_value);
+    const InstanceId variable = s_.end();
+    const InstanceId start = placement(w.start_position, "PROBING START");
+    const InstanceId direction_id = direction(w.its_direction);
+    const InstanceId expected = toleranced(w.expected_value);
+    InstanceId& probe = touch_probes_[w.its_probe];
+    if (probe == 0) {
+      s_.begin("TOUCH_PROBE");
+      s_.string(w.its_probe);
+      probe = s_.end();
+    }
+    s_.begin("WORKPIECE_PROBING");
+    s_.string(w.its_id);
+    s_.ref(secplane);
+    s_.unset();  // its_toolpath: the probing move is described by the attributes below
+    s_.unset();  // its_tool_direction
+    s_.ref(variable);
+    s_.ref(start);
+    s_.ref(workpiece_);
+    s_.ref(direction_id);
+    s_.ref(expected);
+    s_.ref(probe);
+    return s_.end();
+  }
+
   InstanceId write_workpiece(const sn::Workpiece& w, InstanceId rawpiece) {
     InstanceId bounding = 0;
     if (w.its_bounding_geometry) {
@@ -781,6 +878,7 @@ class Cc1Writer {
   part21::RecentInstances<2> circles_{10};
   // Scratch lists, one per level of nesting (curve <- toolpath list <- operation <- feature).
   std::vector<InstanceId> polyline_points_, segment_ids_, trajectory_ids_, feature_operation_ids_;
+  std::unordered_map<std::string, InstanceId> touch_probes_;  // TOUCH_PROBE by its_id (few in a program)
 };
 
 std::string header_text(const StepncWriteOptions& options) {

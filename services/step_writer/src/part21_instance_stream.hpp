@@ -38,6 +38,25 @@ class InstanceStream {
   // instances written before it can refer to it.
   InstanceId reserve() { return next_++; }
   InstanceId begin(InstanceId reserved, std::string_view entity) { return begin_instance(reserved, entity); }
+  // A complex instance #n=(A(...)B(...)): begin_complex(), then for each partial entity, in
+  // alphabetical order, record("A"), its attributes, end_record(); then end().
+  InstanceId begin_complex() {
+    current_ = next_++;
+    line_start_ = static_cast<std::ptrdiff_t>(len_);
+    char* p = room(kMaxIdChars + 3);
+    *p++ = '#';
+    p = write_id(p, current_);
+    *p++ = '=';
+    *p++ = '(';
+    len_ = static_cast<std::size_t>(p - buf_.get());
+    return current_;
+  }
+  void record(std::string_view entity) {
+    put(entity);
+    put("(");
+    first_ = true;
+  }
+  void end_record() { put(")"); }
   InstanceId end() {
     put(");\n");
     if (len_ >= kChunk) flush();
@@ -83,6 +102,7 @@ class InstanceStream {
     len_ = static_cast<std::size_t>(p - buf_.get());
   }
   void boolean(bool v) { token(v ? ".T." : ".F."); }
+  void unknown() { token(".U."); }  // LOGICAL unknown
   void opt_real(const std::optional<double>& v) { v ? real(*v) : unset(); }
   void opt_boolean(const std::optional<bool>& v) { v ? boolean(*v) : unset(); }
   void opt_ref(InstanceId id) { id != 0 ? ref(id) : unset(); }  // 0: no instance, written $

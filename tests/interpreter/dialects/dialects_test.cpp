@@ -345,3 +345,95 @@ TEST(Heidenhain, FeedUnitIsMillimetresPerMinuteUnlessToldOtherwise) {
 }
 
 }  // namespace
+
+namespace {
+
+// ---- --dialect auto without the posts' comments (issue 16): every post of the CAM corpus with
+// its comments removed is read in its dialect. FreeCAD's Mach3/4 and LinuxCNC posts are the same
+// text once their comments are gone: auto names Mach3 among the readings that read it whole with
+// the same tool path (the one it takes, RS274/NGC, moves the tool exactly as the Mach3 reading).
+
+std::string strip_comments(const std::string& text) {
+  std::string out;
+  int depth = 0;
+  bool line_comment = false;
+  for (char c : text) {
+    if (c == '\n') {
+      line_comment = false;
+      depth = 0;
+      out.push_back(c);
+      continue;
+    }
+    if (line_comment) continue;
+    if (c == '(') { ++depth; continue; }
+    if (c == ')' && depth > 0) { --depth; continue; }
+    if (depth > 0) continue;
+    if (c == ';') { line_comment = true; continue; }
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::string detected_line(const std::string& err) {
+  const std::size_t at = err.find("ncbridge: dialect ");
+  return at == std::string::npos ? std::string() : err.substr(at, err.find('\n', at) - at);
+}
+
+TEST(DialectDetection, CommentFreeCamPostsAreReadInTheirDialect) {
+  const fs::path work = fs::temp_directory_path() / ("ncbridge_detect_" + std::to_string(::getpid()));
+  fs::create_directories(work);
+  int checked = 0;
+  for (const char* part : {"p01_block_reference", "p02_plate_center_zero", "p03_bracket_steps", "p04_open_pockets",
+                           "p05_slots"}) {
+    const fs::path dir = kCam / part;
+    const bool fanuc_is_part_nc = fs::exists(dir / "part.linuxcnc.ngc");
+    const std::vector<std::pair<std::string, std::string>> posts = {
+        {fanuc_is_part_nc ? "part.nc" : "part.fanuc.nc", "fanuc"},
+        {fanuc_is_part_nc ? "part.linuxcnc.ngc" : "part.nc", "rs274ngc"},
+        {"part.heidenhain.h", "heidenhain"},
+        {"part.mach3_mach4.tap", "mach3"}};
+    for (const auto& [file, dialect] : posts) {
+      const fs::path stripped = work / (std::string(part) + "_" + file);
+      std::ofstream(stripped, std::ios::binary) << strip_comments(read_file(dir / file));
+      std::vector<std::string> extra;
+      if (dialect == "heidenhain") extra = {"--heidenhain-feed-units", "mm/s"};
+      const auto run = canon(stripped, "auto", dir / "tools.json", extra);
+      ASSERT_EQ(run.exit_code, 0) << stripped << ": " << run.err;
+      const std::string line = detected_line(run.err);
+      if (dialect != "mach3") {
+        EXPECT_EQ(line.rfind("ncbridge: dialect " + dialect + " ", 0), 0u) << stripped << ": " << line;
+      } else {
+        const std::size_t whole = line.find("read whole as ");
+        ASSERT_NE(whole, std::string::npos) << line;
+        const std::string readers = line.substr(whole, line.find(" with the same tool path") - whole);
+        EXPECT_NE(readers.find("mach3"), std::string::npos) << line;
+        EXPECT_NE(line.find("with the same tool path"), std::string::npos) << line;
+        const auto as_mach3 = canon(stripped, "mach3", dir / "tools.json");
+        ASSERT_EQ(as_mach3.exit_code, 0) << as_mach3.err;
+        const auto comparison = compare_tool_paths(tool_path(as_mach3.out), tool_path(run.out), 1e-9);
+        EXPECT_TRUE(comparison.equal) << stripped << ": " << comparison.report;
+      }
+      ++checked;
+    }
+  }
+  fs::remove_all(work);
+  EXPECT_EQ(checked, 20);
+}
+
+// Programs in the style of the common Mach3 posts (our own text): recognised by what they contain.
+TEST(DialectDetection, MachThreePostsAreRecognised) {
+  const fs::path dir = kHere / "detection";
+  for (const char* file : {"pcbgcode_mach3.tap", "cambam_mach3.nc", "vectric_mach3.txt", "estlcam_mach3.nc"}) {
+    const auto run = canon(dir / file, "auto", {});
+    EXPECT_EQ(run.exit_code, 0) << file << ": " << run.err;
+    EXPECT_EQ(detected_line(run.err).rfind("ncbridge: dialect mach3 (detected: ", 0), 0u) << file << ": " << run.err;
+  }
+  // Fusion's Mach3 post names no controller: every reading that reads it moves the tool alike
+  const auto fusion = canon(dir / "fusion_mach3.tap", "auto", {});
+  EXPECT_EQ(fusion.exit_code, 0) << fusion.err;
+  const std::string line = detected_line(fusion.err);
+  EXPECT_NE(line.find("mach3"), std::string::npos) << line;
+  EXPECT_NE(line.find("with the same tool path"), std::string::npos) << line;
+}
+
+}  // namespace

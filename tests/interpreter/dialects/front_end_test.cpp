@@ -403,6 +403,19 @@ TEST(Heidenhain, SectionRepeatRunsTheSectionOnceMoreForEachRep) {
   EXPECT_TRUE(near(e[3], 3.0, 0.0, 0.0));
 }
 
+TEST(Heidenhain, Cycle9DwellsWhereItIsDefined) {
+  const std::string program = "0 BEGIN PGM T MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n2 CYCL DEF 9.0 DWELL TIME\n"
+                              "3 CYCL DEF 9.1 DWELL 1.5\n4 L X+1 R0 FMAX\n5 END PGM T MM\n";
+  const auto sink = run(program, Dialect::Heidenhain);
+  std::vector<double> dwells;
+  for (const auto& c : sink.calls) {
+    if (const auto* d = std::get_if<ncbridge::canonical::Dwell>(&c.data)) dwells.push_back(d->seconds);
+  }
+  ASSERT_EQ(dwells.size(), 1u);
+  EXPECT_DOUBLE_EQ(dwells[0], 1.5);
+  EXPECT_EQ(sink.ends().size(), 2u);
+}
+
 TEST(Heidenhain, ChamferBetweenTwoLines) {
   const std::string program =
       "0 BEGIN PGM T MM\n1 L X+0 Y+0 Z+0 R0 FMAX\n2 L X+10 F100\n3 CHF 2\n4 L Y+10\n5 END PGM T MM\n";

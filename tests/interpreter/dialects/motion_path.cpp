@@ -11,7 +11,10 @@ std::vector<Motion> tool_path(std::string_view listing) {
   std::vector<Motion> path;
   double last[3] = {NAN, NAN, NAN};
   for (const CanonLine& line : parse_canon_listing(listing)) {
-    if (line.name != "STRAIGHT_TRAVERSE" && line.name != "STRAIGHT_FEED" && line.name != "ARC_FEED") continue;
+    if (line.name != "STRAIGHT_TRAVERSE" && line.name != "STRAIGHT_FEED" && line.name != "ARC_FEED" &&
+        line.name != "STRAIGHT_PROBE") {
+      continue;
+    }
     Motion m{line.name, {}, line.text};
     for (const std::string& a : line.args) m.values.push_back(std::strtod(a.c_str(), nullptr));
     if (m.values.size() < 6) continue;

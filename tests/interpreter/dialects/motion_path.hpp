@@ -1,6 +1,6 @@
 #pragma once
 // The tool path of a canonical listing (`ncbridge canon` or LinuxCNC rs274 format): its
-// STRAIGHT_TRAVERSE, STRAIGHT_FEED and ARC_FEED calls in order, compared point by point.
+// STRAIGHT_TRAVERSE, STRAIGHT_FEED, ARC_FEED and STRAIGHT_PROBE calls in order, compared point by point.
 // Moves of zero length are dropped first: a post that leaves out a block whose position does
 // not change (Fanuc, Heidenhain) moves the tool exactly as one that writes it.
 #include <string>
@@ -10,7 +10,7 @@
 namespace ncbridge::testing {
 
 struct Motion {
-  std::string name;            // STRAIGHT_TRAVERSE, STRAIGHT_FEED, ARC_FEED
+  std::string name;            // STRAIGHT_TRAVERSE, STRAIGHT_FEED, ARC_FEED, STRAIGHT_PROBE
   std::vector<double> values;  // the call's numeric arguments
   std::string text;            // the listing line, for reports
 };

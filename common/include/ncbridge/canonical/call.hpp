@@ -22,6 +22,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace ncbridge::canonical {
 
@@ -97,7 +98,26 @@ struct ArcFeed {
   double a, b, c, u, v, w;
 };
 struct StraightFeed { Pose end; };
-struct StraightProbe { Pose end; };
+// A NURBS curve in the XY plane at the current Z (LinuxCNC NURBS_FEED, made by G5 cubic
+// splines, G5.1 quadratic B-splines and G5.2/G5.3 NURBS): control points with weights, the
+// first one the current position; `order` is the degree + 1. Its knot vector is implicit, the
+// clamped uniform one of LinuxCNC (knot_vector_creator): `order` zeros, 1, 2, ..., n - order + 1,
+// then `order` times n - order + 2, for control points 0..n.
+struct NurbsControlPoint {
+  double x, y, weight;
+  friend bool operator==(const NurbsControlPoint&, const NurbsControlPoint&) = default;
+};
+struct NurbsFeed {
+  std::vector<NurbsControlPoint> control_points;
+  int order;
+};
+// G38.2-G38.5. probe_type, as LinuxCNC passes it: bit 0 set = no error when the move ends
+// without the probe changing state (G38.3, G38.5), bit 1 set = move until the probe loses
+// contact instead of until it touches (G38.4, G38.5).
+struct StraightProbe {
+  Pose end;
+  std::uint8_t probe_type = 0;
+};
 struct RigidTap { Pose end; double scale; };
 struct Dwell { double seconds; };
 
@@ -146,6 +166,18 @@ struct DisableAdaptiveFeed {};
 struct EnableFeedHold {};
 struct DisableFeedHold {};
 
+// Probing and operator output. TURN_PROBE_ON/OFF frame each STRAIGHT_PROBE. LOGOPEN/LOGAPPEND
+// open (truncating or appending) the file a program's LOG lines are written to, LOGCLOSE closes
+// it. PRINT is no NIST canonical function: LinuxCNC writes its text to the interpreter's standard
+// output, and `ncbridge canon` prints it there, as a line of its own, as rs274 does.
+struct TurnProbeOn {};
+struct TurnProbeOff {};
+struct LogOpen { std::string path; };
+struct LogAppend { std::string path; };
+struct LogClose {};
+struct Log { std::string text; };
+struct Print { std::string text; };
+
 // ---- Program
 struct OptionalProgramStop {};
 struct ProgramStop {};
@@ -169,7 +201,8 @@ using Data = std::variant<
     EnableAdaptiveFeed, DisableAdaptiveFeed, EnableFeedHold, DisableFeedHold,
     OptionalProgramStop, ProgramStop, ProgramEnd, PalletShuttle, OnReset,
     // appended later; new alternatives go at the end so existing indices stay put
-    WaitSpindleOrientComplete, Finish, SetToolTableEntry>;
+    WaitSpindleOrientComplete, Finish, SetToolTableEntry, NurbsFeed,
+    TurnProbeOn, TurnProbeOff, LogOpen, LogAppend, LogClose, Log, Print>;
 
 struct Call {
   Data data;

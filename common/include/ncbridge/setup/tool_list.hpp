@@ -31,6 +31,11 @@ struct Tool {
   int flutes = 0;                 // 0 = unknown
   double point_angle = 0;         // degrees (drills), 0 = unknown
   double thread_pitch = 0;        // mm (taps), 0 = unknown
+  // Cutting data the shop gives with the tool (0 = not given): spindle speed, feed and plunge
+  // (axial) feed.
+  double spindle_rpm = 0;         // rev/min
+  double feed = 0;                // mm/min
+  double plunge_feed = 0;         // mm/min
   // LinuxCNC tool-table extras (offsets beyond Z, orientation for lathes) are kept here.
   double x_offset = 0;            // mm
   int pocket = 0;                 // P in a tool table; defaults to the tool number

@@ -36,9 +36,14 @@ const std::vector<Rule>& rules() {
         r(Dialect::Heidenhain, "TOOL CALL", R"(^\s*\d*\s*TOOL\s+CALL\b)"),
         r(Dialect::Heidenhain, "CYCL DEF", R"(^\s*\d*\s*CYCL\s+DEF\b)"),
         r(Dialect::Heidenhain, "an L block with signed coordinates", R"(^\s*\d+\s+L\s+[XYZ][+-])"),
-        r(Dialect::Mach3, "a Mach3/Mach4 post-processor header", R"(MACH3|MACH4)"),
+        r(Dialect::Mach3, "a Mach3/Mach4 post-processor header", R"(MACH3|MACH4|MACH 3)"),
         r(Dialect::Fanuc, "a Fanuc post-processor header", R"(\(.*FANUC)"),
-        r(Dialect::Rs274Ngc, "a LinuxCNC post-processor header", R"(\(.*LINUXCNC)"),
+        r(Dialect::Rs274Ngc, "a LinuxCNC post-processor header", R"(\(.*(LINUXCNC|EMC2))"),
+        // CAM systems whose usual output is for Mach3: pcb-gcode's Mach3 profile, CamBam's
+        // default post, Vectric's Mach2/3 posts, Estlcam (after the controller names above, which
+        // say more)
+        r(Dialect::Mach3, "a pcb-gcode, CamBam, Vectric or Estlcam header (their posts for Mach3)",
+          R"((\(|;).*(PCB-GCODE|PCB GCODE|CAMBAM|VECTRIC|ESTLCAM))"),
         r(Dialect::Rs274Ngc, "an o-word statement", R"(^\s*(N\d+\s*)?O\s*(<[^>]*>|\d+)\s*(SUB|ENDSUB|CALL|IF|ELSE|ENDIF|WHILE|ENDWHILE|DO|REPEAT|ENDREPEAT|RETURN)\b)"),
         r(Dialect::Rs274Ngc, "a named parameter #<...>", R"(#<)"),
         r(Dialect::Siemens840D, "T=\"name\"", R"(\bT\s*=\s*")"),
@@ -52,6 +57,9 @@ const std::vector<Rule>& rules() {
         r(Dialect::Fanuc, "an O program number", R"(^\s*O\d+\b)"),
         r(Dialect::Fanuc, "M98 P", R"(\bM98\s*P)"),
         r(Dialect::Fanuc, "G65 macro call", R"(\bG65\b)"),
+        // Vectric's Mach2/3 post: the tool change alone and packed (T1M6), positions packed
+        // without blanks (G0X0.000Y0.000S15000M3)
+        r(Dialect::Mach3, "the layout of Vectric's Mach2/3 post (T1M6 alone, packed words)", R"(^T\d+M0?6\s*$)"),
     };
   }();
   return kRules;
@@ -72,7 +80,7 @@ DetectedDialect detect_dialect(std::string_view text) {
   for (const Rule& rule : rules()) {
     for (std::size_t i = 0; i < lines.size(); ++i) {
       if (std::regex_search(lines[i], rule.pattern)) {
-        return {rule.dialect, std::string(rule.what) + ", line " + std::to_string(i + 1)};
+        return {rule.dialect, std::string(rule.what) + ", line " + std::to_string(i + 1), true};
       }
     }
   }

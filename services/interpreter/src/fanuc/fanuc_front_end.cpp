@@ -3,6 +3,7 @@
 // dialect table onto neutral RS274 blocks for the executor (lowering/dialect_machine.hpp).
 #include "fanuc/fanuc_front_end.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -73,7 +74,15 @@ class Runner {
  public:
   Runner(const Options& options, canonical::Sink& sink, const Flavour& flavour)
       : options_(options), flavour_(flavour), table_(lowering::load_dialect_table(flavour.table)),
-        m_(options, sink, table_), reader_(flavour) {}
+        vacant_(Parameters::kCount, 0), m_(options, sink, table_), reader_(flavour) {
+    vacant_[0] = 1;
+    for (int i = 1; i <= 33; ++i) vacant_[static_cast<std::size_t>(i)] = 1;
+    for (int i = 100; i <= 199; ++i) vacant_[static_cast<std::size_t>(i)] = 1;
+    for (int i = 500; i <= 999; ++i) vacant_[static_cast<std::size_t>(i)] = 1;
+    vacant_test_ = [this](int number) {
+      return number >= 0 && static_cast<std::size_t>(number) < vacant_.size() && vacant_[static_cast<std::size_t>(number)] != 0;
+    };
+  }
 
   void run(ProgramText main);
 
@@ -97,13 +106,27 @@ class Runner {
   void call_program(double number, int repeats, bool macro, std::uint32_t column);
   bool return_from_program(std::optional<double> sequence, std::uint32_t column);
   std::size_t find_program(long number, std::size_t& start, std::uint32_t column);
-  double eval(ExprRef ref) { return evaluate(line_.block, ref, m_.parameters(), m_.file_name()); }
-  void assign(const Assignment& a, double value);
+  double eval(ExprRef ref) {
+    if (flavour_.macro_b) return evaluate(line_.block, ref, m_.parameters(), m_.file_name(), vacant_test_);
+    return evaluate(line_.block, ref, m_.parameters(), m_.file_name());
+  }
+  bool vacant(ExprRef ref) {
+    return flavour_.macro_b && vacant_reference(line_.block, ref, m_.parameters(), m_.file_name(), vacant_test_);
+  }
+  void assign(const Assignment& a);
+  void set_variable(int number, double value, bool is_vacant);
+  // G65: a new set of local variables #1-#33, all vacant but the arguments
+  void push_locals();
+  void pop_locals();
+  // G10: work offsets (L2 P1-P6, L20 the additional G54.1 P1-P48) and tool offsets (L1, L10-L13)
+  void data_setting(NeutralBlock& nb, std::map<char, Value>& w, std::uint32_t column);
+  bool machine_function(double code, std::uint32_t column);
   double scaled(std::size_t word, double v) const;
 
   // lowering helpers
   std::optional<double> axis_target(char letter, const std::map<char, Value>& w, const Point3& here) const;
   void lower_motion(NeutralBlock& nb, const std::map<char, Value>& w);
+  void copy_skip_position();
   void lower_cycle(NeutralBlock& nb, const std::map<char, Value>& w);
   void spell_boring(NeutralBlock& nb, Point3 hole, double dx, double dy, double r_abs, double z_abs, int repeats,
                     std::uint32_t col);
@@ -111,6 +134,18 @@ class Runner {
   const Options& options_;
   const Flavour& flavour_;
   DialectTable table_;
+  // custom macro B: which numbered variables are vacant (#0 always; the locals, #100-#199 and
+  // #500-#999 from the start: an offline reading knows no values the control kept)
+  std::vector<char> vacant_;
+  VacantTest vacant_test_;
+  struct SavedLocals {
+    std::array<char, 34> vacant{};
+    std::array<double, 3> high{};  // #31-#33 (the parameter store keeps #1-#30 per call)
+  };
+  std::vector<SavedLocals> saved_locals_;
+  std::map<int, Point3> extended_offsets_;  // G10 L20 Pn: G54.1 Pn, in mm
+  bool rigid_tapping_ = false;              // M29 given: the next G84/G74 is rigid
+  bool tool_changes_seen_ = false;          // an M6 was programmed (else tools are loaded by hand)
   DialectMachine m_;
   LineReader reader_;
   Line line_;
@@ -166,6 +201,7 @@ bool Runner::step() {
     m_.at(static_cast<std::uint32_t>(file_), f.text.name, static_cast<std::uint32_t>(f.text.size()));
     if (!calls_.empty()) m_.fail(1, "Subprogram ended without M99");
     if (options_.require_program_end) m_.fail(1, "File ended with no program end (M30/M2) or closing '%'");
+    m_.warn(1, "File ended with no program end (M30/M2) or closing '%': the program ends here");
     return false;
   }
   if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
@@ -207,13 +243,38 @@ bool Runner::step() {
   return run_block();
 }
 
-void Runner::assign(const Assignment& a, double value) {
+void Runner::assign(const Assignment& a) {
   int number = parameter_number(line_.block, a.target, m_.parameters(), m_.file_name());
+  const double value = eval(a.value);
   if (number == 3000) {
     std::string text = line_.block.comments.empty() ? std::string() : std::string(line_.block.comments.front().text);
     m_.fail(a.column, "Macro alarm " + std::to_string(static_cast<long>(value)) + (text.empty() ? "" : ": " + text));
   }
-  m_.parameters().set_numbered(number, value);
+  // #2 = #1 copies a vacant #1; any arithmetic gives a value (a vacant variable reads 0)
+  set_variable(number, value, vacant(a.value));
+}
+
+void Runner::set_variable(int number, double value, bool is_vacant) {
+  m_.parameters().set_numbered(number, is_vacant ? 0.0 : value);
+  if (number >= 0 && static_cast<std::size_t>(number) < vacant_.size()) vacant_[static_cast<std::size_t>(number)] = is_vacant;
+}
+
+void Runner::push_locals() {
+  SavedLocals saved;
+  for (int i = 1; i <= 33; ++i) saved.vacant[static_cast<std::size_t>(i)] = vacant_[static_cast<std::size_t>(i)];
+  for (int i = 31; i <= 33; ++i) saved.high[static_cast<std::size_t>(i - 31)] = m_.parameters().numbered(i);
+  saved_locals_.push_back(saved);
+  m_.parameters().push_scope();
+  for (int i = 1; i <= 33; ++i) set_variable(i, 0.0, true);
+}
+
+void Runner::pop_locals() {
+  m_.parameters().pop_scope();
+  if (saved_locals_.empty()) return;
+  const SavedLocals& saved = saved_locals_.back();
+  for (int i = 1; i <= 33; ++i) vacant_[static_cast<std::size_t>(i)] = saved.vacant[static_cast<std::size_t>(i)];
+  for (int i = 31; i <= 33; ++i) m_.parameters().set_numbered(i, saved.high[static_cast<std::size_t>(i - 31)]);
+  saved_locals_.pop_back();
 }
 
 bool Runner::run_statement() {
@@ -223,7 +284,7 @@ bool Runner::run_statement() {
       bool taken = eval(st.condition) != 0.0;
       if (line_.then_form) {
         if (taken) {
-          for (const Assignment& a : line_.block.assignments) assign(a, eval(a.value));
+          for (const Assignment& a : line_.block.assignments) assign(a);
         }
         return true;
       }
@@ -377,7 +438,7 @@ bool Runner::return_from_program(std::optional<double> sequence, std::uint32_t c
     pc_ = c.start_pc;
     return true;
   }
-  if (c.macro) m_.parameters().pop_scope();
+  if (c.macro) pop_locals();
   file_ = c.file;
   pc_ = c.return_pc;
   calls_.pop_back();
@@ -404,13 +465,17 @@ bool Runner::run_block() {
   const Block& b = line_.block;
   if (b.words.empty() && b.assignments.empty() && b.comments.empty()) return true;
   if (!b.words.empty()) ++executed_blocks_;
-  for (const Assignment& a : b.assignments) assign(a, eval(a.value));
+  for (const Assignment& a : b.assignments) assign(a);
 
   NeutralBlock nb;
   std::map<char, Value> w;
   std::vector<Value> gs, ms;
+  std::vector<std::pair<char, Value>> in_order;  // G65's arguments, in the order written
+  std::optional<Value> repeated_ijk;             // I, J or K again: only G65 (argument list II) takes it
+  char repeated_letter = 0;
   for (std::size_t i = 0; i < b.words.size(); ++i) {
     const Word& word = b.words[i];
+    if (vacant(word.value)) continue;  // an address with a vacant variable is not there
     double raw = eval(word.value);
     Value v{scaled(i, raw), word.column, line_.had_point[i], raw};
     if (word.letter == 'g') {
@@ -418,7 +483,15 @@ bool Runner::run_block() {
     } else if (word.letter == 'm') {
       ms.push_back(v);
     } else {
+      in_order.emplace_back(word.letter, v);
       if (w.count(word.letter)) {
+        if (word.letter == 'i' || word.letter == 'j' || word.letter == 'k') {
+          if (!repeated_ijk) {
+            repeated_ijk = v;
+            repeated_letter = word.letter;
+          }
+          continue;
+        }
         m_.fail(word.column, std::string("Multiple ") + static_cast<char>(word.letter - 'a' + 'A') + " words on one line");
       }
       w[word.letter] = v;
@@ -431,7 +504,7 @@ bool Runner::run_block() {
 
   // G codes through the dictionary
   cycle_column_ = 0;
-  enum class Special { None, Dwell, Rotation, Local, Macro, DataSetting, Home, Machine, SetOrigin };
+  enum class Special { None, Dwell, Rotation, Local, Macro, DataSetting, Home, Machine, SetOrigin, Skip };
   Special special = Special::None;
   bool rotation_on = false;
   std::uint32_t cancel_column = 0;
@@ -449,6 +522,7 @@ bool Runner::run_block() {
       cycle_r_.reset(); cycle_z_.reset(); cycle_q_.reset(); cycle_p_.reset();
     } else if (meta == "cycle_cancel") {
       motion_ = 80;
+      rigid_tapping_ = false;
       cancel_column = g.column;
       cycle_r_.reset(); cycle_z_.reset(); cycle_q_.reset(); cycle_p_.reset();
     } else if (meta == "absolute") {
@@ -477,7 +551,27 @@ bool Runner::run_block() {
       special = Special::Macro;
     } else if (meta == "data_setting") {
       special = Special::DataSetting;
-      nb.g(10, g.column);
+    } else if (meta == "skip") {
+      special = Special::Skip;
+    } else if (meta == "additional_work_offset") {
+      // G54.1 Pn: the additional work offset n (set by G10 L20 Pn), carried by coordinate
+      // system 9 (G59.3), which no Fanuc program otherwise names
+      if (!w.count('p')) m_.fail(g.column, "G54.1 needs P (the additional work offset, 1-48)");
+      const long n = std::lround(w['p'].v);
+      if (n < 1 || n > 48) m_.fail(w['p'].column, "G54.1 P must be 1-48");
+      const Point3 o = extended_offsets_[static_cast<int>(n)];
+      const double k = m_.state().mm_per_unit();
+      NeutralBlock load;
+      load.g(10, g.column);
+      load.add('l', 2, g.column);
+      load.add('p', 9, g.column);
+      load.add('x', o.x / k, g.column);
+      load.add('y', o.y / k, g.column);
+      load.add('z', o.z / k, g.column);
+      m_.execute(load);
+      m_.comment("ncbridge: G54.1 P" + std::to_string(n) + " (additional work offset) as coordinate system 9");
+      w.erase('p');
+      nb.g(59.3, g.column);
     } else if (meta == "exact_stop_block") {
       // G9: exact stop for this block; the canonical model has no per-block stop
     } else if (e->rs274) {
@@ -493,6 +587,9 @@ bool Runner::run_block() {
     }
   }
 
+  if (repeated_ijk && special != Special::Macro) {
+    m_.fail(repeated_ijk->column, std::string("Multiple ") + static_cast<char>(repeated_letter - 'a' + 'A') + " words on one line");
+  }
   // G80 with G0/G1 in the same block: the motion code cancels the cycle by itself
   if (cancel_column != 0 && motion_ == 80) nb.g(80, cancel_column);
 
@@ -500,13 +597,24 @@ bool Runner::run_block() {
   std::optional<Value> call, ret;
   for (const Value& mv : ms) {
     const lowering::CodeEntry* e = table_.m(mv.v);
-    if (e == nullptr) m_.fail(mv.column, "M" + lowering::code_key(mv.v) + " is not a " + table_.dialect + " M code ncbridge supports");
+    if (e == nullptr) {
+      if (m_.machine_function(mv.v, mv.column)) continue;
+      m_.fail(mv.column, "M" + lowering::code_key(mv.v) + " is not a " + table_.dialect + " M code ncbridge supports");
+    }
+    if (e->meta == "rigid_tapping_mode") {
+      // M29 S..: the next G84/G74 taps with the spindle synchronised to the feed; the tool
+      // moves as in the cycle, so the reading is the same
+      rigid_tapping_ = true;
+      m_.comment("ncbridge: M29 rigid tapping mode for the next tapping cycle");
+      continue;
+    }
     if (e->meta == "subprogram_call") {
       call = mv;
     } else if (e->meta == "subprogram_return") {
       ret = mv;
     } else if (e->rs274) {
       nb.m(static_cast<int>(*e->rs274), mv.column);
+      if (e->meta == "tool_change") tool_changes_seen_ = true;
     } else {
       m_.fail(mv.column, "M" + lowering::code_key(mv.v) + " (" + e->meta + ") is not supported yet");
     }
@@ -572,9 +680,7 @@ bool Runner::run_block() {
       break;
     }
     case Special::DataSetting:
-      for (char letter : {'l', 'p', 'x', 'y', 'z', 'a', 'b', 'c', 'r'}) {
-        if (w.count(letter)) nb.add(letter, w[letter].v, w[letter].column);
-      }
+      data_setting(nb, w, gs.front().column);
       break;
     case Special::Machine:
     case Special::SetOrigin:
@@ -588,6 +694,19 @@ bool Runner::run_block() {
       m_.put_axes(nb, axis_target('x', w, here), axis_target('y', w, here), axis_target('z', w, here), gs.front().column);
       break;
     }
+    case Special::Skip: {
+      // G31 (Fanuc skip function, Mach3 probe): a straight move that stops where the skip (probe)
+      // signal comes, without an alarm when it does not: LinuxCNC's G38.3. One-shot: the motion
+      // mode stays. The skip position is read as the end point (no machine here).
+      const std::uint32_t col = gs.front().column;
+      Point3 here = m_.position();
+      const auto x = axis_target('x', w, here), y = axis_target('y', w, here), z = axis_target('z', w, here);
+      if (!x && !y && !z) m_.fail(col, "G31 needs an X, Y or Z end point");
+      if (w.count('p')) m_.fail(w.at('p').column, "not supported: multi-step skip (G31 P)");
+      nb.g(38.3, col);
+      m_.put_axes(nb, x, y, z, col);
+      break;
+    }
     case Special::Macro:
       break;
     case Special::None:
@@ -595,23 +714,80 @@ bool Runner::run_block() {
       break;
   }
 
+  // G41/G42 D (or H, on controls set so) name an offset number: the tool list's tool of that
+  // number gives the radius. The control's offset table is not known offline: an offset number
+  // the list does not have is read as radius 0 (the tool centre on the programmed contour), said
+  // in a warning.
+  for (auto& word : nb.words) {
+    if (word.letter != 'g' || (word.value != 41 && word.value != 42) || !flavour_.macro_b) continue;
+    const char letter = w.count('d') ? 'd' : w.count('h') ? 'h' : 0;
+    if (letter == 0) break;
+    const int offset = static_cast<int>(std::lround(w[letter].v));
+    if (offset != 0 && options_.tools.find(offset) == nullptr) {
+      m_.warn(w[letter].column, "G" + std::to_string(static_cast<int>(word.value)) + " " +
+                                    std::string(1, static_cast<char>(letter - 'a' + 'A')) + std::to_string(offset) +
+                                    ": offset " + std::to_string(offset) +
+                                    " is not in the tool list, its radius is not known: radius 0 used (the tool "
+                                    "centre on the programmed contour)");
+      word.value += 0.1;  // G41.1/G42.1 D0
+      nb.words.erase(std::remove_if(nb.words.begin(), nb.words.end(),
+                                    [&](const lowering::NeutralWord& x) { return x.letter == letter; }),
+                     nb.words.end());
+      nb.add('d', 0.0, w[letter].column);
+    } else if (letter == 'h') {
+      for (auto& other : nb.words) {
+        if (other.letter == 'h') other.letter = 'd';
+      }
+    }
+    break;
+  }
+
+  // A program that changes no tool by M6 (the operator loads each tool at an M0, as the
+  // program's comments say) names the tool by its length offset: G43 Hn takes tool n, when the
+  // tool list has it, as the tool in the spindle (said in a warning).
+  if (!tool_changes_seen_ && w.count('h') && nb.has('g')) {
+    bool g43 = false;
+    for (const auto& word : nb.words) g43 |= word.letter == 'g' && word.value == 43;
+    const int h = static_cast<int>(std::lround(w['h'].v));
+    if (g43 && h > 0 && h != m_.state().tool_in_spindle && options_.tools.find(h) != nullptr) {
+      m_.warn(w['h'].column, "no tool change (M6) before G43 H" + std::to_string(h) + ": tool " + std::to_string(h) +
+                                 " of the tool list taken as the tool loaded by hand");
+      NeutralBlock load;
+      load.m(61, w['h'].column);
+      load.add('q', h, w['h'].column);
+      m_.execute(load);
+    }
+  }
+
   bool ended = m_.execute(nb);
   if (ended) return false;
+  if (special == Special::Skip) copy_skip_position();
 
   if (special == Special::Macro) {
     std::uint32_t col = gs.front().column;
     if (!w.count('p')) m_.fail(col, "G65 needs P (the macro's program number)");
     int repeats = w.count('l') ? static_cast<int>(std::lround(w['l'].v)) : 1;
+    // argument specification I (A B C I J K D E F H M Q R S T U V W X Y Z) and II (A B C and up to
+    // ten I J K sets: I1 J1 K1 -> #4-#6 ... I10 J10 K10 -> #31-#33); an I, J or K that does not
+    // follow the previous one within its set starts the next set; a later argument for the same
+    // variable wins, as on the control
     std::vector<std::pair<int, double>> args;
-    for (const auto& [letter, v] : w) {
+    int set = 0, last_in_set = -1;
+    for (const auto& [letter, v] : in_order) {
       if (letter == 'p' || letter == 'l') continue;
       int var = argument_variable(letter);
+      if (letter == 'i' || letter == 'j' || letter == 'k') {
+        const int at = letter - 'i';
+        if (set == 0 || at <= last_in_set) ++set;
+        last_in_set = at;
+        if (set > 10) m_.fail(v.column, "More than ten I J K argument sets in G65");
+        var = 4 + 3 * (set - 1) + at;
+      }
       if (var == 0) m_.fail(v.column, std::string("Address ") + static_cast<char>(letter - 'a' + 'A') + " cannot carry a G65 argument");
       args.emplace_back(var, v.v);
     }
-    m_.parameters().push_scope();
-    for (int i = 1; i <= Parameters::kLocalCount; ++i) m_.parameters().set_numbered(i, 0.0);
-    for (const auto& [var, v] : args) m_.parameters().set_numbered(var, v);
+    push_locals();
+    for (const auto& [var, v] : args) set_variable(var, v, false);
     call_program(w['p'].v, 1, true, col);
     calls_.back().remaining = repeats - 1;
     return true;
@@ -633,6 +809,85 @@ bool Runner::run_block() {
     return return_from_program(sequence, ret->column);
   }
   return true;
+}
+
+// The skip position: Fanuc keeps it in #5061.. as LinuxCNC does (the executor sets them); a
+// dialect whose probe writes elsewhere names the first variable in its table (Mach3: #2000-#2005,
+// X Y Z A B C).
+void Runner::copy_skip_position() {
+  const double first = table_.setting("probe_result_variable", 5061);
+  if (first == 5061) return;
+  for (int i = 0; i < 6; ++i) {
+    m_.parameters().set_numbered(static_cast<int>(first) + i, m_.parameters().numbered(5061 + i));
+  }
+}
+
+void Runner::data_setting(NeutralBlock& nb, std::map<char, Value>& w, std::uint32_t column) {
+  if (!flavour_.macro_b) {
+    // Mach: LinuxCNC's G10 (L1 tool table, L2/L20 coordinate systems)
+    nb.g(10, column);
+    for (char letter : {'l', 'p', 'x', 'y', 'z', 'a', 'b', 'c', 'r'}) {
+      if (w.count(letter)) nb.add(letter, w[letter].v, w[letter].column);
+    }
+    return;
+  }
+  if (!w.count('l')) m_.fail(column, "G10 needs L (L2 work offset, L20 additional offset, L1/L10-L13 tool offset)");
+  if (!w.count('p')) m_.fail(column, "G10 needs P");
+  const long l = std::lround(w['l'].raw), p = std::lround(w['p'].raw);
+  const std::uint32_t lc = w['l'].column, pc = w['p'].column;
+  const double k = m_.state().mm_per_unit();
+  if (l == 2) {
+    // P1-P6: G54-G59; in G91 the values are added to the offset's present value
+    if (p == 0) {
+      for (char a : {'x', 'y', 'z'}) {
+        if (w.count(a) && w[a].v != 0) {
+          m_.fail(w[a].column, "G10 L2 P0 sets the external work offset (EXOFS), which shifts every work offset: not supported");
+        }
+      }
+      return;
+    }
+    if (p < 1 || p > 6) m_.fail(pc, "G10 L2 P must be 0-6 (P1-P6: G54-G59)");
+    nb.g(10, column);
+    nb.add('l', 2, lc);
+    nb.add('p', static_cast<double>(p), pc);
+    const char* axes = "xyzabc";
+    for (int i = 0; i < 6; ++i) {
+      const char a = axes[i];
+      if (!w.count(a)) continue;
+      double v = w[a].v;
+      if (incremental_) {
+        // the parameter store holds offsets in inches (rs274's machine unit)
+        const double present = m_.parameters().numbered(5201 + 20 * static_cast<int>(p) + i);
+        v += i < 3 ? present * 25.4 / k : present;
+      }
+      nb.add(a, v, w[a].column);
+    }
+    return;
+  }
+  if (l == 20) {
+    if (p < 1 || p > 48) m_.fail(pc, "G10 L20 P must be 1-48 (the additional work offsets of G54.1)");
+    Point3& o = extended_offsets_[static_cast<int>(p)];
+    if (w.count('x')) o.x = (incremental_ ? o.x : 0.0) + w['x'].v * k;
+    if (w.count('y')) o.y = (incremental_ ? o.y : 0.0) + w['y'].v * k;
+    if (w.count('z')) o.z = (incremental_ ? o.z : 0.0) + w['z'].v * k;
+    return;
+  }
+  if (l == 1 || l == 10 || l == 12) {
+    // tool offset n: L1 (memory A) and L10 its length, L12 its radius (from R)
+    if (!w.count('r')) m_.fail(column, "G10 L" + std::to_string(l) + " needs R (the offset value)");
+    if (incremental_) m_.fail(w['r'].column, "G10 L" + std::to_string(l) + " in G91 (adding to a tool offset) is not supported");
+    nb.g(10, column);
+    nb.add('l', 1, lc);
+    nb.add('p', static_cast<double>(p), pc);
+    nb.add(l == 12 ? 'r' : 'z', w['r'].v, w['r'].column);
+    return;
+  }
+  if (l == 11 || l == 13) {
+    m_.warn(lc, "G10 L" + std::to_string(l) + " sets a tool " + (l == 11 ? "length" : "radius") +
+                    " wear offset, which changes no tool-tip path: not applied");
+    return;
+  }
+  m_.fail(lc, "G10 L" + std::to_string(l) + " is not supported (L2, L20, L1, L10-L13 are)");
 }
 
 std::optional<double> Runner::axis_target(char letter, const std::map<char, Value>& w, const Point3& here) const {

@@ -26,7 +26,7 @@ struct HWord {
 
 enum class Kind {
   Empty, Comment, BeginPgm, EndPgm, BlkForm, ToolCall, ToolDef, CyclDef, CyclCall, Label, CallLabel, CallPgm,
-  Assign, FnJump, Stop, Path,
+  Assign, FnJump, Stop, Path, TchProbe,
   Functions,  // a block of M functions only (`9 M5`, `M5 M9`), as Fusion's post writes at tool changes
   SysRead     // FN 18: SYSREAD Qn = IDa NRb IDXc (words ID, NR, IDX)
 };
@@ -162,6 +162,16 @@ class Reader {
         ++pos_;  // '='
         out.parameters.emplace_back(target, value(out.exprs));
       }
+    } else if (keyword("TCH PROBE")) {  // touch probe cycles: number and text as CYCL DEF
+      out.kind = Kind::TchProbe;
+      skip();
+      std::size_t start = pos_;
+      while (pos_ < s_.size() && (lowering::is_digit(s_[pos_]) || s_[pos_] == '.')) ++pos_;
+      if (start == pos_) fail(start, "TCH PROBE needs a cycle number");
+      out.keyword = std::string(s_.substr(start, pos_ - start));
+      out.text = up(s_.substr(pos_));
+      out.column = static_cast<std::uint32_t>(start + 1);
+      if (out.keyword == "0.1") words(out);  // cycle 0's pre-position: X+5 Y+0 Z-5
     } else if (keyword("CYCL CALL")) {
       out.kind = Kind::CyclCall;
       skip();
@@ -201,7 +211,7 @@ class Reader {
       out.kind = Kind::Functions;
       words(out);
     } else {
-      static constexpr std::string_view kPaths[] = {"RND", "CHF", "CC", "CR", "CT", "CP", "LP", "L", "C"};
+      static constexpr std::string_view kPaths[] = {"APPR", "DEP", "RND", "CHF", "CC", "CR", "CT", "CP", "LP", "L", "C"};
       for (std::string_view p : kPaths) {
         std::size_t save = pos_;
         if (keyword(p) && (pos_ >= s_.size() || s_[pos_] == ' ' || s_[pos_] == '\t')) {

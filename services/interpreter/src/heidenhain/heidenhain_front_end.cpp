@@ -15,6 +15,8 @@
 #include "expression.hpp"
 #include "heidenhain/block_reader.hpp"
 #include "heidenhain/corner_rounding.hpp"
+#include "heidenhain/pocket_cycles.hpp"
+#include "heidenhain/sl_cycles.hpp"
 #include "lowering/dialect_machine.hpp"
 #include "lowering/dialect_table.hpp"
 #include "lowering/infix_expression.hpp"
@@ -74,8 +76,15 @@ class Runner {
   bool tool_call(const HBlock& b);
   void sysread(const HBlock& b);
   bool path(const HBlock& b, std::size_t index);
+  bool approach_or_depart(const HBlock& b, std::size_t index);
   void cycle_def(const HBlock& b);
+  bool touch_probe(const HBlock& b);
   void cycle_call(std::uint32_t column);
+  // SL cycles: the contours of the labels cycle 14 names, as their blocks draw them
+  std::vector<SlContour> sl_contours(std::uint32_t column);
+  void sl_cycle(std::map<std::string, double>& v, std::uint32_t column);
+  void pocket_cycle(std::map<std::string, double>& v, std::uint32_t column);
+  void point_pattern(const HBlock& b, const lowering::CycleEntry& pattern);
   void bore_milling(std::map<std::string, double>& v, double r, double bottom, double clearance, std::uint32_t column);
   void split_m(const HBlock& b, NeutralBlock& before, NeutralBlock& after);
   void add_feed(NeutralBlock& nb, std::uint32_t column);
@@ -107,6 +116,9 @@ class Runner {
   void call_program(const HBlock& b);
 
   double feed_ = 0;              // the last programmed F (control units)
+  std::string probe_result_;     // TCH PROBE 0.0: the result's Q parameter (its key), axis, direction
+  int probe_axis_ = 2;
+  double probe_direction_ = -1;
   double pole_x_ = 0, pole_y_ = 0;
   bool have_pole_ = false;
   Point3 tangent_{1, 0, 0};      // direction at the end of the last path element
@@ -117,6 +129,8 @@ class Runner {
   bool cycle_on_every_move_ = false;  // M89
   std::string cycle_;            // the defined cycle number
   std::map<std::string, double> cycle_values_;
+  std::vector<std::string> sl_labels_;  // cycle 14: the contour labels
+  std::optional<SlData> sl_data_;       // cycle 20
   std::set<std::string> defined_since_cycle_def_;  // Q numbers / old-style lines given since CYCL DEF
   std::uint32_t cycle_def_line_ = 0;
   std::uint64_t steps_ = 0;
@@ -285,6 +299,7 @@ bool Runner::step() {
       return true;
     }
     if (options_.require_program_end) m_.fail(1, "File ended without END PGM");
+    m_.warn(1, "File ended without END PGM: the program ends here");
     return false;
   }
   if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
@@ -334,6 +349,8 @@ bool Runner::step() {
     case Kind::CyclDef:
       cycle_def(b);
       return true;
+    case Kind::TchProbe:
+      return touch_probe(b);
     case Kind::CyclCall: {
       NeutralBlock before, after;
       split_m(b, before, after);
@@ -459,7 +476,10 @@ void Runner::split_m(const HBlock& b, NeutralBlock& before, NeutralBlock& after)
     if (w.name != "M" || w.value == kNoExpr) continue;
     double code = eval(b, w.value);
     const lowering::CodeEntry* e = table_.m(code);
-    if (e == nullptr) m_.fail(w.column, "M" + lowering::code_key(code) + " is not a Heidenhain M function ncbridge supports");
+    if (e == nullptr) {
+      if (m_.machine_function(code, w.column)) continue;
+      m_.fail(w.column, "M" + lowering::code_key(code) + " is not a Heidenhain M function ncbridge supports");
+    }
     if (e->meta == "spindle_cw_coolant" || e->meta == "spindle_ccw_coolant") {
       before.m(e->meta == "spindle_cw_coolant" ? 3 : 4, w.column);
       before.m(8, w.column);
@@ -523,7 +543,19 @@ bool Runner::tool_call(const HBlock& b) {
       nb.add('z', t->length / m_.state().mm_per_unit() + delta_length, b.column);
     }
   }
-  return !m_.execute(nb);
+  if (m_.execute(nb)) return false;
+  // the system Q parameters a TOOL CALL sets, from the tool list: Q108 the active tool radius
+  // (with DR), Q114 its length (with DL), Q109 the tool axis (0 X, 1 Y, 2 Z), Q113 the unit
+  if (const setup::Tool* t = options_.tools.find(tool)) {
+    double delta_radius = 0;
+    if (const HWord* dr = find(b, "DR"); dr && dr->value != kNoExpr) delta_radius = eval(b, dr->value);
+    const double k = m_.state().mm_per_unit();
+    m_.parameters().set_named("_q108", t->diameter / k / 2.0 + delta_radius);
+    m_.parameters().set_named("_q114", t->length / k + delta_length);
+  }
+  m_.parameters().set_named("_q109", b.text == "X" ? 0.0 : b.text == "Y" ? 1.0 : 2.0);
+  m_.parameters().set_named("_q113", m_.state().units == canonical::Units::Inches ? 1.0 : 0.0);
+  return true;
 }
 
 // FN 18 SYSREAD, for the system data an offline reading knows: ID10 NR1 (unit), ID20 (NR1
@@ -606,8 +638,187 @@ void Runner::plan_chamfer(const HBlock& chf, std::size_t index, const Point3& st
   corner_.t2 = {corner.x + vx * size, corner.y + vy * size, corner.z};
 }
 
+// APPR/DEP: approaching the contour's first point PA and leaving its last point PE, as the TNC
+// manual describes them. LT: on a straight line, tangential to the first (last) element, from
+// (to) an auxiliary point LEN away along it; LN: perpendicular to it, LEN away on the tool's
+// side; CT: on an arc of radius R and angle CCA tangential to it, its centre on the tool's side
+// (R < 0: the other side); LCT: on a straight line tangential to such an arc that joins the
+// element tangentially at PA (PE), the line from the start point (to the end point X Y). APPR
+// switches the radius compensation it names on with its first move (the compensation's entry
+// move, as R0 -> RL/RR), DEP switches it off with its last.
+bool Runner::approach_or_depart(const HBlock& b, std::size_t index) {
+  const bool approach = b.keyword == "APPR";
+  std::string form;
+  std::optional<double> x, y, z, len, cca, radius;
+  int comp = m_.state().comp_side == canonical::Side::Left ? 41 : m_.state().comp_side == canonical::Side::Right ? 42 : 40;
+  bool rapid = false;
+  const Point3 here = m_.position();
+  for (const HWord& w : b.words) {
+    const std::string& n = w.name;
+    if (n == "LT" || n == "LN" || n == "CT" || n == "LCT") { form = n; continue; }
+    if (n == "RL") { comp = 41; continue; }
+    if (n == "RR") { comp = 42; continue; }
+    if (n == "FMAX") { rapid = true; continue; }
+    if (n == "M") continue;
+    if (w.value == kNoExpr) {
+      if (n == "F" || n == "R") continue;
+      m_.fail(w.column, n + " has no value");
+    }
+    const double v = eval(b, w.value);
+    if (n == "X") x = v; else if (n == "Y") y = v; else if (n == "Z") z = v;
+    else if (n == "IX") x = here.x + v; else if (n == "IY") y = here.y + v; else if (n == "IZ") z = here.z + v;
+    else if (n == "LEN") len = v;
+    else if (n == "CCA") cca = v;
+    else if (n == "R") {
+      if (v == 0) comp = 40; else radius = v;
+    }
+    else if (n == "F") feed_ = v;
+    else m_.fail(w.column, "Word " + n + " is not supported in " + b.keyword + " " + form);
+  }
+  (void)rapid;  // the approach and departure run at the feed (the TNC's first move to PH aside)
+  if (form.empty()) m_.fail(b.column, b.keyword + " needs LT, LN, CT or LCT");
+  if ((form == "LT" || form == "LN") && (!len || *len <= 0)) m_.fail(b.column, b.keyword + " " + form + " needs LEN > 0");
+  if ((form == "CT" || form == "LCT") && (!radius || *radius == 0)) m_.fail(b.column, b.keyword + " " + form + " needs R");
+  if (form == "CT" && (!cca || *cca <= 0 || *cca >= 360)) m_.fail(b.column, b.keyword + " CT needs CCA between 0 and 360");
+  if (comp == 40 && approach) m_.fail(b.column, "APPR needs the radius compensation RL or RR");
+  const bool left = comp == 41;
+  NeutralBlock before, after;
+  split_m(b, before, after);
+  Point3 contour{}, tangent{};  // the contour point and the element's direction there
+  if (approach) {
+    if (!x || !y) m_.fail(b.column, "APPR needs the first contour point X and Y");
+    contour = {*x, *y, z.value_or(here.z)};
+    // the first contour element: the next path block
+    std::size_t j = prog().pc;
+    HBlock next;
+    while (j < prog().text.size()) {
+      const std::size_t lines = read_block(j, next);
+      if (next.kind != Kind::Empty && next.kind != Kind::Comment) break;
+      j += lines;
+    }
+    std::optional<Point3> pole;
+    if (next.kind == Kind::Path && next.keyword == "CC") {
+      Point3 c{pole_x_, pole_y_, 0};
+      for (const HWord& w : next.words) {
+        if (w.value == kNoExpr) continue;
+        const double v = eval(next, w.value);
+        if (w.name == "X") c.x = v; else if (w.name == "Y") c.y = v;
+        else if (w.name == "IX") c.x = contour.x + v; else if (w.name == "IY") c.y = contour.y + v;
+      }
+      pole = c;
+      j += read_block(j, next);
+      while (j < prog().text.size() && (next.kind == Kind::Empty || next.kind == Kind::Comment)) j += read_block(j, next);
+    }
+    if (j >= prog().text.size() || next.kind != Kind::Path) fail_at(index, b.column, "APPR must be followed by the first contour element");
+    const ContourElement e = next_element(next, j, contour, index, b.column, pole);
+    if (e.arc) {
+      const double rx = contour.x - e.cx, ry = contour.y - e.cy, l = std::hypot(rx, ry);
+      tangent = e.cw ? Point3{ry / l, -rx / l, 0} : Point3{-ry / l, rx / l, 0};
+    } else {
+      const double dx = e.end.x - contour.x, dy = e.end.y - contour.y, l = std::hypot(dx, dy);
+      if (l < 1e-9) fail_at(index, b.column, "APPR: the first contour element has no length");
+      tangent = {dx / l, dy / l, 0};
+    }
+  } else {
+    if (!have_tangent_) m_.fail(b.column, "DEP needs a contour element before it");
+    contour = here;
+    tangent = tangent_;
+  }
+  // the normal towards the tool's side (RL: left of the direction of travel)
+  const Point3 side = left ? Point3{-tangent.y, tangent.x, 0} : Point3{tangent.y, -tangent.x, 0};
+  NeutralBlock nb = approach ? before : NeutralBlock{};
+  auto move_line = [&](const Point3& to, bool first) {
+    if (first && approach && comp != 40) nb.g(comp, b.column);
+    add_feed(nb, b.column);
+    nb.g(1, b.column);
+    m_.put_axes(nb, to.x, to.y, std::nullopt, b.column);
+    if (m_.execute(nb)) m_.fail(b.column, b.keyword + " ended the program");
+    nb.clear();
+  };
+  auto move_arc = [&](const Point3& to, const Point3& centre, bool cw, bool first) {
+    if (first && approach && comp != 40) nb.g(comp, b.column);
+    add_feed(nb, b.column);
+    m_.put_xy_arc(nb, cw, to.x, to.y, std::nullopt, centre.x, centre.y, b.column);
+    if (m_.execute(nb)) m_.fail(b.column, b.keyword + " ended the program");
+    nb.clear();
+  };
+  const double sign = radius && *radius < 0 ? -1.0 : 1.0;
+  const double r = radius ? std::fabs(*radius) : 0.0;
+  // an arc whose centre lies on the tool's side (R > 0) turns towards it: counter-clockwise for RL
+  const bool arc_cw = (sign > 0) ? !left : left;
+  const Point3 centre{contour.x + sign * side.x * r, contour.y + sign * side.y * r, 0};
+  auto rotate_about = [&](const Point3& p, double degrees) {
+    const double a = degrees * kDeg, c = std::cos(a), s2 = std::sin(a);
+    const double dx = p.x - centre.x, dy = p.y - centre.y;
+    return Point3{centre.x + c * dx - s2 * dy, centre.y + s2 * dx + c * dy, 0};
+  };
+  // the point where a line from (to) `p` touches the arc's circle, on the side the arc runs
+  auto touching = [&](const Point3& p, bool incoming) -> Point3 {
+    const double dx = p.x - centre.x, dy = p.y - centre.y, d = std::hypot(dx, dy);
+    if (d <= r + 1e-9) m_.fail(b.column, b.keyword + " LCT: the point is inside the arc's circle");
+    const double base = std::atan2(dy, dx), off = std::acos(r / d);
+    // the tangent point at which the arc's direction of travel points away from (towards) p
+    for (double sgn : {1.0, -1.0}) {
+      const double a = base + sgn * off;
+      const Point3 t{centre.x + r * std::cos(a), centre.y + r * std::sin(a), 0};
+      const Point3 dir = arc_cw ? Point3{std::sin(a), -std::cos(a), 0} : Point3{-std::sin(a), std::cos(a), 0};
+      const double along = (t.x - p.x) * dir.x + (t.y - p.y) * dir.y;
+      if ((incoming && along > 0) || (!incoming && along < 0)) return t;
+    }
+    m_.fail(b.column, b.keyword + " LCT: no tangent from the point to the arc");
+  };
+  if (approach) {
+    if (form == "LT" || form == "LN") {
+      const Point3 aux = form == "LT" ? Point3{contour.x - tangent.x * *len, contour.y - tangent.y * *len, 0}
+                                      : Point3{contour.x + side.x * *len, contour.y + side.y * *len, 0};
+      move_line(aux, true);
+      move_line(contour, false);
+    } else if (form == "CT") {
+      const Point3 start = rotate_about(contour, arc_cw ? *cca : -*cca);
+      move_line(start, true);
+      move_arc(contour, centre, arc_cw, false);
+    } else {
+      const Point3 start = touching(here, true);
+      move_line(start, true);
+      move_arc(contour, centre, arc_cw, false);
+    }
+    have_tangent_ = true;
+    tangent_ = tangent;
+  } else {
+    Point3 end{};
+    if (form == "LT" || form == "LN") {
+      end = form == "LT" ? Point3{contour.x + tangent.x * *len, contour.y + tangent.y * *len, 0}
+                         : Point3{contour.x + side.x * *len, contour.y + side.y * *len, 0};
+      nb.g(40, b.column);
+      move_line(end, false);
+    } else if (form == "CT") {
+      end = rotate_about(contour, arc_cw ? -*cca : *cca);
+      move_arc(end, centre, arc_cw, false);
+      // the compensation ends here: the next move leaves the contour
+      nb.g(40, b.column);
+      if (m_.execute(nb)) return false;
+      nb.clear();
+    } else {
+      if (!x || !y) m_.fail(b.column, "DEP LCT needs the end point X and Y");
+      const Point3 target{*x, *y, 0};
+      const Point3 leave = touching(target, false);
+      move_arc(leave, centre, arc_cw, false);
+      nb.g(40, b.column);
+      move_line(target, false);
+    }
+    if (z) {
+      nb.g(1, b.column);
+      m_.put_axes(nb, std::nullopt, std::nullopt, *z, b.column);
+      if (m_.execute(nb)) return false;
+      nb.clear();
+    }
+  }
+  return !m_.execute(after);
+}
+
 bool Runner::path(const HBlock& b, std::size_t index) {
   const std::string& k = b.keyword;
+  if (k == "APPR" || k == "DEP") return approach_or_depart(b, index);
   Point3 here = m_.position();
   std::optional<double> x, y, z;
   bool rapid = false, cw = false, dr = false;
@@ -633,8 +844,10 @@ bool Runner::path(const HBlock& b, std::size_t index) {
       }
       continue;
     }
+    // an address without a value (old TNC output: "L X+32,000 R F5000 M") changes nothing
+    if (w.value == kNoExpr && (n == "R" || n == "M" || n == "F")) continue;
     if (w.value == kNoExpr) {
-      if (n == "R" || n == "X" || n == "Y" || n == "Z") m_.fail(w.column, n + " has no value");
+      if (n == "X" || n == "Y" || n == "Z") m_.fail(w.column, n + " has no value");
       m_.fail(w.column, "Unknown word " + n);
     }
     double v = eval(b, w.value);
@@ -915,6 +1128,20 @@ void Runner::cycle_def(const HBlock& b) {
   std::size_t dot = number.find('.');
   std::string cycle = dot == std::string::npos ? number : number.substr(0, dot);
   std::string sub = dot == std::string::npos ? "" : number;
+  if (cycle == "9") {
+    // 9 DWELL TIME acts at once: CYCL DEF 9.1 DWELL seconds
+    if (sub != "9.1") return;
+    std::size_t p = 0;
+    const std::string& text = b.text;
+    while (p < text.size() && !(lowering::is_digit(text[p]) || text[p] == '.')) ++p;
+    double seconds = 0;
+    if (!lowering::read_decimal(text, p, seconds)) m_.fail(b.column, "CYCL DEF 9.1 needs the dwell time in seconds");
+    NeutralBlock nb;
+    nb.g(4, b.column);
+    nb.add('p', seconds, b.column);
+    m_.execute(nb);
+    return;
+  }
   if (cycle == "7" || cycle == "10") {
     // coordinate transformation cycles act at once: 7 DATUM SHIFT, 10 ROTATION
     if (sub.empty() || sub == cycle + ".0") return;
@@ -955,6 +1182,47 @@ void Runner::cycle_def(const HBlock& b) {
     m_.execute(nb);
     return;
   }
+  if (cycle == "14") {
+    // 14 CONTOUR GEOMETRY: 14.1 CONTOUR LABEL1 /2 /3 (any language): the labels, in order
+    if (sub != "14.1") return;
+    sl_labels_.clear();
+    for (std::size_t i = 0; i < b.text.size();) {
+      if (!lowering::is_digit(b.text[i])) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < b.text.size() && lowering::is_digit(b.text[j])) ++j;
+      sl_labels_.push_back(std::to_string(std::stol(b.text.substr(i, j - i))));
+      i = j;
+    }
+    if (sl_labels_.empty()) m_.fail(b.column, "CYCL DEF 14.1 names no contour label");
+    return;
+  }
+  if (cycle == "20") {
+    // 20 CONTOUR DATA acts at its definition: Q1-Q9
+    for (const auto& [target, value] : b.parameters) {
+      const ExprNode& t = b.exprs.nodes[target];
+      m_.parameters().set_named(b.exprs.name(t.name_begin, t.name_length), eval(b, value));
+    }
+    auto q = [&](int n) { return m_.parameters().named("_q" + std::to_string(n)).value_or(0.0); };
+    SlData d;
+    d.depth = q(1);
+    d.overlap = q(2) > 0 ? q(2) : 1.0;
+    d.side_allowance = q(3);
+    d.floor_allowance = q(4);
+    d.surface = q(5);
+    d.setup = q(6);
+    d.clearance = q(7);
+    d.direction = q(9) < 0 ? -1.0 : 1.0;
+    if (d.depth == 0) m_.fail(b.column, "CYCL DEF 20 needs the milling depth Q1");
+    sl_data_ = d;
+    return;
+  }
+  if (auto pattern = table_.patterns.find(cycle); pattern != table_.patterns.end()) {
+    point_pattern(b, pattern->second);
+    return;
+  }
   auto it = table_.cycles.find(cycle);
   if (it == table_.cycles.end()) m_.fail(b.column, "CYCL DEF " + cycle + " is not a cycle ncbridge supports");
   if (sub.empty() || sub == cycle + ".0") {
@@ -980,6 +1248,83 @@ void Runner::cycle_def(const HBlock& b) {
   if (!lowering::read_decimal(text, p, v)) m_.fail(b.column, "CYCL DEF " + sub + " has no value");
   cycle_values_[role->second] = v;
   defined_since_cycle_def_.insert(sub);
+  // old pocket cycles add words to a line: "5.3 PECKG -1.5 F50" (the plunging feed), "5.5 F50 DR-"
+  // (the milling feed and the direction)
+  if (role->second == "plunge_depth") {
+    const std::size_t f = text.find(" F", p);
+    double feed = 0;
+    std::size_t q = f == std::string::npos ? f : f + 2;
+    if (q != std::string::npos && lowering::read_decimal(text, q, feed)) cycle_values_["plunge_feed"] = feed;
+  }
+  if (const std::size_t dr = text.find("DR"); dr != std::string::npos && dr + 2 < text.size()) {
+    cycle_values_["direction"] = text[dr + 2] == '-' ? -1.0 : 1.0;
+    // "4.6 F100 DR+ RADIUS 2": the pocket's corner radius follows the direction
+    std::size_t q = dr + 3;
+    while (q < text.size() && !(lowering::is_digit(text[q]) || text[q] == '.')) ++q;
+    double corner = 0;
+    if (q < text.size() && lowering::read_decimal(text, q, corner)) cycle_values_["corner_radius"] = corner;
+  }
+}
+
+// TCH PROBE 0 REFERENCE PLANE (0.0: result parameter and probing axis with direction, "Q5 X-";
+// 0.1: the pre-position): rapid to the pre-position, probe along the axis at the probing feed
+// (LinuxCNC's G38.3) up to the probe's measuring range, save the touched coordinate in the Q
+// parameter, return to the pre-position. The probe is taken to touch at the end of its range
+// (there is no machine here). Range and feed are the machine's (MP6130, MP6120): table settings.
+// Other probing cycles are a located "not supported: probing cycle N".
+bool Runner::touch_probe(const HBlock& b) {
+  const std::string& number = b.keyword;
+  const std::string cycle = number.substr(0, number.find('.'));
+  if (cycle != "0") m_.fail(b.column, "not supported: probing cycle " + cycle + " (TCH PROBE " + number + ")");
+  const std::string& text = b.text;
+  if (number == "0" || number == "0.0") {
+    std::size_t q = text.find('Q');
+    while (q != std::string::npos && (q + 1 >= text.size() || !lowering::is_digit(text[q + 1]))) q = text.find('Q', q + 1);
+    std::size_t digits = q == std::string::npos ? q : q + 1;
+    while (digits != std::string::npos && digits < text.size() && lowering::is_digit(text[digits])) ++digits;
+    if (q == std::string::npos || digits == q + 1) m_.fail(b.column, "TCH PROBE 0.0 needs the Q parameter for its result");
+    std::size_t p = digits;
+    while (p < text.size() && text[p] == ' ') ++p;
+    if (p + 1 >= text.size() || (text[p] != 'X' && text[p] != 'Y' && text[p] != 'Z') || (text[p + 1] != '+' && text[p + 1] != '-')) {
+      m_.fail(b.column, "TCH PROBE 0.0 needs the probing axis and direction after the Q parameter (X-, Z+, ...)");
+    }
+    probe_result_ = "_q" + text.substr(q + 1, digits - q - 1);
+    probe_axis_ = text[p] - 'X';
+    probe_direction_ = text[p + 1] == '+' ? 1.0 : -1.0;
+    return true;
+  }
+  if (number != "0.1") m_.fail(b.column, "TCH PROBE " + number + " is not a line of probing cycle 0");
+  if (probe_result_.empty()) m_.fail(b.column, "TCH PROBE 0.1 without its TCH PROBE 0.0");
+  std::optional<double> pre[3];
+  for (const HWord& w : b.words) {
+    if (w.value == kNoExpr) continue;
+    const int axis = w.name == "X" ? 0 : w.name == "Y" ? 1 : w.name == "Z" ? 2 : -1;
+    if (axis < 0) m_.fail(w.column, "TCH PROBE 0.1 takes the pre-position X, Y, Z");
+    pre[axis] = eval(b, w);
+  }
+  const bool inch = m_.state().units == canonical::Units::Inches;
+  const double range = table_.setting("touch_probe_measuring_range_mm", 20.0) / (inch ? 25.4 : 1.0);
+  const double probing_feed = table_.setting("touch_probe_feed_mm_per_min", 100.0) / (inch ? 25.4 : 1.0);
+  NeutralBlock nb;
+  nb.g(0, b.column);
+  m_.put_axes(nb, pre[0], pre[1], pre[2], b.column);
+  if (m_.execute(nb)) return false;
+  const Point3 start = m_.position();
+  Point3 end = start;
+  (probe_axis_ == 0 ? end.x : probe_axis_ == 1 ? end.y : end.z) += probe_direction_ * range;
+  nb.clear();
+  nb.g(38.3, b.column);
+  nb.add('f', probing_feed, b.column);
+  m_.put_axes(nb, end.x, end.y, end.z, b.column);
+  if (m_.execute(nb)) return false;
+  m_.parameters().set_named(probe_result_, probe_axis_ == 0 ? end.x : probe_axis_ == 1 ? end.y : end.z);
+  nb.clear();
+  nb.g(0, b.column);
+  m_.put_axes(nb, start.x, start.y, start.z, b.column);
+  const double f = feed(feed_);
+  if (f > 0) nb.add('f', f, b.column);  // the program's feed again
+  probe_result_.clear();
+  return !m_.execute(nb);
 }
 
 // Cycle 208 BORE MILLING: from the hole centre at the set-up clearance, out to the bore circle,
@@ -1029,6 +1374,307 @@ void Runner::bore_milling(std::map<std::string, double>& v, double r, double bot
   run(nb);
 }
 
+std::vector<SlContour> Runner::sl_contours(std::uint32_t column) {
+  if (sl_labels_.empty()) m_.fail(column, "SL cycle " + cycle_ + " without contours: CYCL DEF 14 names them");
+  std::vector<SlContour> contours;
+  for (const std::string& label : sl_labels_) {
+    auto at = prog().labels.find(label);
+    if (at == prog().labels.end()) m_.fail(column, "SL contour LBL " + label + " not found");
+    SlContour c;
+    Point3 here{};
+    bool started = false;
+    int side = 0;  // 41 RL, 42 RR
+    double pole_x = 0, pole_y = 0;
+    bool have_pole = false;
+    const std::string where = "SL contour LBL " + label;
+    auto arc_points = [&](double cx, double cy, const Point3& end, bool cw) {
+      const double r = std::hypot(here.x - cx, here.y - cy);
+      const double a0 = std::atan2(here.y - cy, here.x - cx);
+      double a1 = std::atan2(end.y - cy, end.x - cx);
+      double sweep = cw ? a0 - a1 : a1 - a0;
+      while (sweep <= 1e-12) sweep += 2 * std::numbers::pi;
+      const double chord = r > 0.005 ? 2 * std::acos(1 - 0.005 / r) : std::numbers::pi / 8;
+      const int n = std::max(4, static_cast<int>(std::ceil(sweep / std::min(chord, std::numbers::pi / 8))));
+      for (int i = 1; i <= n; ++i) {
+        const double a = a0 + (cw ? -1 : 1) * sweep * i / n;
+        c.points.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
+      }
+    };
+    HBlock b;
+    for (std::size_t i = at->second + 1; i < prog().text.size();) {
+      const std::size_t lines = read_block(i, b);
+      const std::size_t index = i;
+      i += lines;
+      if (b.kind == Kind::Label) break;  // LBL 0, or the next label
+      if (b.kind == Kind::Empty || b.kind == Kind::Comment) continue;
+      if (b.kind != Kind::Path) fail_at(index, b.column, where + ": only contour blocks (L, C, CC, CR) belong here");
+      const std::string& k = b.keyword;
+      if (k != "L" && k != "C" && k != "CC" && k != "CR") {
+        fail_at(index, b.column, where + ": " + k + " in an SL contour is not supported (L, C, CC, CR are)");
+      }
+      Point3 end = here;
+      std::optional<double> radius;
+      bool cw = false, dr = false;
+      for (const HWord& w : b.words) {
+        if (w.name == "RL") side = 41;
+        else if (w.name == "RR") side = 42;
+        else if (w.name == "DR") {
+          dr = true;
+          cw = w.sign == '-' || (w.value != kNoExpr && eval(b, w.value) < 0);
+        } else if (w.value != kNoExpr) {
+          const double val = eval(b, w.value);
+          if (w.name == "X") end.x = val;
+          else if (w.name == "Y") end.y = val;
+          else if (w.name == "IX") end.x = here.x + val;
+          else if (w.name == "IY") end.y = here.y + val;
+          else if (w.name == "R" && k == "CR") radius = val;
+        }
+      }
+      if (k == "CC") {
+        pole_x = end.x;
+        pole_y = end.y;
+        have_pole = true;
+        continue;
+      }
+      if (!started) {
+        if (k != "L") fail_at(index, b.column, where + " must start with a straight line (L) to its first point");
+        here = end;
+        started = true;
+        c.points.push_back({here.x, here.y});
+        continue;
+      }
+      if (k == "L") {
+        c.points.push_back({end.x, end.y});
+      } else if (k == "C") {
+        if (!have_pole || !dr) fail_at(index, b.column, where + ": C needs a CC before it and DR+ or DR-");
+        arc_points(pole_x, pole_y, end, cw);
+      } else {
+        if (!radius || !dr) fail_at(index, b.column, where + ": CR needs R and DR+ or DR-");
+        double cx = 0, cy = 0;
+        if (!radius_arc_centre(here, end, *radius, cw, cx, cy)) fail_at(index, b.column, where + ": CR radius too small");
+        arc_points(cx, cy, end, cw);
+      }
+      here = end;
+    }
+    // a closed contour: the last point is the first
+    if (c.points.size() > 1 && std::hypot(c.points.back().x - c.points.front().x, c.points.back().y - c.points.front().y) < 1e-6) {
+      c.points.pop_back();
+    }
+    if (c.points.size() < 3) m_.fail(column, where + " is not a closed contour");
+    if (side == 0) m_.fail(column, where + " has no radius compensation (RL/RR): pocket or island cannot be told");
+    double area = 0;
+    for (std::size_t j = 0; j < c.points.size(); ++j) {
+      const SlPoint& p = c.points[j];
+      const SlPoint& q = c.points[(j + 1) % c.points.size()];
+      area += p.x * q.y - q.x * p.y;
+    }
+    // the tool inside: RL counter-clockwise, RR clockwise
+    c.pocket = (side == 41) == (area > 0);
+    contours.push_back(std::move(c));
+  }
+  return contours;
+}
+
+void Runner::sl_cycle(std::map<std::string, double>& v, std::uint32_t column) {
+  if (!sl_data_) m_.fail(column, "SL cycle " + cycle_ + " without its CONTOUR DATA (CYCL DEF 20)");
+  const setup::Tool* tool = options_.tools.find(m_.state().tool_in_spindle);
+  if (tool == nullptr) m_.fail(column, "SL cycle " + cycle_ + " needs the tool's diameter: the tool is not in the tool list");
+  SlData d = *sl_data_;
+  SlCall c;
+  c.operation = cycle_ == "22" ? SlOperation::RoughOut : cycle_ == "23" ? SlOperation::FloorFinishing : SlOperation::SideFinishing;
+  c.plunge_depth = v.count("plunge_depth") ? v["plunge_depth"] : 0.0;
+  c.plunge_feed = feed(v.count("plunge_feed") ? v["plunge_feed"] : feed_);
+  c.milling_feed = feed(v.count("milling_feed") ? v["milling_feed"] : feed_);
+  c.finish_allowance = v.count("finish_allowance") ? v["finish_allowance"] : 0.0;
+  c.tool_radius = tool->diameter / m_.state().mm_per_unit() / 2.0;
+  if (cycle_ == "24" && v.count("direction") && v["direction"] != 0) d.direction = v["direction"] < 0 ? -1.0 : 1.0;
+  if (cycle_ == "22" && v.count("coarse_tool") && v["coarse_tool"] != 0) {
+    m_.comment("ncbridge: cycle 22 Q18 (coarse roughing tool " + std::to_string(std::lround(v["coarse_tool"])) +
+               "): the whole area is cleared again, not only what that tool left");
+  }
+  sl_machine(m_, sl_contours(column), d, c, column);
+}
+
+// 251 RECTANGULAR POCKET, 252 CIRCULAR POCKET, 253 SLOT MILLING at the current position: the
+// shape as one SL pocket contour, roughed out (Q215 0 or 1) from the inside out layer by layer of
+// Q202, then (Q215 0 or 2) its walls finished in infeeds of Q338 and its floor, where the
+// allowances Q368/Q369 leave something, at Q385; at the end up to the 2nd set-up clearance.
+void Runner::pocket_cycle(std::map<std::string, double>& v, std::uint32_t column) {
+  const setup::Tool* tool = options_.tools.find(m_.state().tool_in_spindle);
+  if (tool == nullptr) m_.fail(column, "Cycle " + cycle_ + " needs the tool's diameter: the tool is not in the tool list");
+  auto value = [&](const char* role, double fallback) { return v.count(role) ? v[role] : fallback; };
+  const Point3 here = m_.position();
+  SlContour c;
+  c.pocket = true;
+  auto circle = [&](double cx, double cy, double r, double from, double sweep) {
+    const double chord = r > 0.005 ? 2 * std::acos(1 - 0.005 / r) : std::numbers::pi / 8;
+    const int n = std::max(8, static_cast<int>(std::ceil(std::fabs(sweep) / std::min(chord, std::numbers::pi / 16))));
+    for (int i = 0; i < n; ++i) {
+      const double a = from + sweep * i / n;
+      c.points.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
+    }
+  };
+  const double rotation = value(cycle_ == "253" ? "rotation" : "rotation", 0.0) * kDeg;
+  auto place = [&](double x, double y, double ox, double oy) -> SlPoint {
+    // (x, y) relative to the shape's centre, turned, the centre at the reference point + (ox, oy)
+    const double cr = std::cos(rotation), sr = std::sin(rotation);
+    const double px = x + ox, py = y + oy;
+    return {here.x + cr * px - sr * py, here.y + sr * px + cr * py};
+  };
+  if (cycle_ == "252") {
+    const double d = value("diameter", 0.0);
+    if (d <= 0) m_.fail(column, "Cycle 252 needs the circle diameter Q223");
+    circle(here.x, here.y, d / 2.0, 0.0, 2 * std::numbers::pi);
+  } else {
+    const double l = value("first_side", 0.0), w = value("second_side", 0.0);
+    if (l <= 0 || w <= 0) m_.fail(column, "Cycle " + cycle_ + " needs both side lengths Q218 and Q219");
+    const int position = static_cast<int>(std::lround(value("position", 0.0)));
+    double ox = 0, oy = 0;  // from the reference point to the centre, before turning
+    if (cycle_ == "251") {
+      const double rc = std::min(value("corner_radius", 0.0), std::min(l, w) / 2.0);
+      switch (position) {
+        case 0: break;
+        case 1: ox = l / 2; oy = w / 2; break;
+        case 2: ox = -l / 2; oy = w / 2; break;
+        case 3: ox = -l / 2; oy = -w / 2; break;
+        case 4: ox = l / 2; oy = -w / 2; break;
+        default: m_.fail(column, "Cycle 251: Q367 must be 0-4");
+      }
+      const double hx = l / 2 - rc, hy = w / 2 - rc;
+      const SlPoint corners[4] = {{hx, -hy}, {hx, hy}, {-hx, hy}, {-hx, -hy}};
+      for (int k = 0; k < 4; ++k) {
+        const double from = (k * 90.0 - 90.0) * kDeg;
+        if (rc > 1e-9) {
+          const int n = 8;
+          for (int i = 0; i <= n; ++i) {
+            const double a = from + (std::numbers::pi / 2) * i / n;
+            c.points.push_back(place(corners[k].x + rc * std::cos(a), corners[k].y + rc * std::sin(a), ox, oy));
+          }
+        } else {
+          c.points.push_back(place(corners[k].x, corners[k].y, ox, oy));
+        }
+      }
+    } else {
+      if (w >= l) m_.fail(column, "Cycle 253: the slot width Q219 must be less than its length Q218");
+      const double half = l / 2 - w / 2;  // centre to the centre of each end circle
+      switch (position) {
+        case 0: break;
+        case 1: ox = l / 2; break;
+        case 2: ox = half; break;
+        case 3: ox = -half; break;
+        case 4: ox = -l / 2; break;
+        default: m_.fail(column, "Cycle 253: Q367 must be 0-4");
+      }
+      for (int end = 0; end < 2; ++end) {
+        const double cx = end == 0 ? half : -half;
+        const double from = end == 0 ? -std::numbers::pi / 2 : std::numbers::pi / 2;
+        const int n = 16;
+        for (int i = 0; i <= n; ++i) {
+          const double a = from + std::numbers::pi * i / n;
+          c.points.push_back(place(cx + w / 2 * std::cos(a), w / 2 * std::sin(a), ox, oy));
+        }
+      }
+    }
+  }
+  SlData d;
+  d.depth = value("depth", 0.0);
+  d.overlap = value("overlap", 1.0) > 0 ? value("overlap", 1.0) : 1.0;
+  d.side_allowance = value("side_allowance", 0.0);
+  d.floor_allowance = value("floor_allowance", 0.0);
+  d.surface = value("surface", 0.0);
+  d.setup = value("setup_clearance", 0.0);
+  d.clearance = d.surface + std::max(std::fabs(d.setup), std::fabs(value("second_setup_clearance", 0.0)));
+  d.direction = value("climb_or_up_cut", 1.0) < 0 ? -1.0 : 1.0;
+  if (d.depth == 0) m_.fail(column, "Cycle " + cycle_ + " needs the depth Q201");
+  const int operation = static_cast<int>(std::lround(value("operation", 0.0)));
+  if (operation < 0 || operation > 2) m_.fail(column, "Cycle " + cycle_ + ": Q215 must be 0, 1 or 2");
+  const std::vector<SlContour> contours = {c};
+  SlCall call;
+  call.tool_radius = tool->diameter / m_.state().mm_per_unit() / 2.0;
+  call.plunge_feed = feed(value("plunge_feed", feed_));
+  if (operation != 2) {
+    call.operation = SlOperation::RoughOut;
+    call.plunge_depth = value("plunge_depth", 0.0);
+    call.milling_feed = feed(value("milling_feed", feed_));
+    sl_machine(m_, contours, d, call, column);
+  }
+  if (operation != 1) {
+    const double finishing = feed(value("finishing_feed", value("milling_feed", feed_)) > 0
+                                      ? value("finishing_feed", value("milling_feed", feed_))
+                                      : value("milling_feed", feed_));
+    call.milling_feed = finishing;
+    if (d.side_allowance > 0 || operation == 2) {
+      call.operation = SlOperation::SideFinishing;
+      call.plunge_depth = value("finishing_infeed", 0.0) != 0 ? value("finishing_infeed", 0.0) : std::fabs(d.depth);
+      SlData walls = d;
+      walls.side_allowance = 0;
+      sl_machine(m_, contours, walls, call, column);
+    }
+    if (d.floor_allowance > 0 || operation == 2) {
+      call.operation = SlOperation::FloorFinishing;
+      SlData floor = d;
+      floor.side_allowance = 0;
+      sl_machine(m_, contours, floor, call, column);
+    }
+  }
+}
+
+// 220 POLAR PATTERN and 221 CARTESIAN PATTERN act at their definition: the cycle defined before
+// them runs at each point, the tool moving between points at the 2nd set-up clearance (Q301 1)
+// or the set-up clearance (Q301 0) above the surface; 221 runs line by line.
+void Runner::point_pattern(const HBlock& b, const lowering::CycleEntry& pattern) {
+  if (cycle_.empty()) m_.fail(b.column, "CYCL DEF " + b.keyword + " (" + pattern.name + ") with no cycle defined before it");
+  for (const auto& [target, value] : b.parameters) {
+    const ExprNode& t = b.exprs.nodes[target];
+    m_.parameters().set_named(b.exprs.name(t.name_begin, t.name_length), eval(b, value));
+  }
+  std::map<std::string, double> p;
+  for (const auto& [q, role] : pattern.roles) p[role] = m_.parameters().named("_q" + q.substr(1)).value_or(0.0);
+  std::vector<std::pair<double, double>> points;
+  if (b.keyword == "221") {
+    const int columns = static_cast<int>(std::lround(p["columns"])), lines = static_cast<int>(std::lround(p["lines"]));
+    if (columns < 1 || lines < 1) m_.fail(b.column, "CYCL DEF 221 needs at least one column (Q242) and line (Q243)");
+    if (static_cast<std::uint64_t>(columns) * static_cast<std::uint64_t>(lines) > options_.max_loop_iterations) {
+      m_.fail(b.column, "CYCL DEF 221: more points than the iteration limit");
+    }
+    const double a = p["rotation"] * kDeg;
+    for (int line = 0; line < lines; ++line) {
+      for (int col = 0; col < columns; ++col) {
+        const double dx = col * p["spacing_1"], dy = line * p["spacing_2"];
+        points.emplace_back(p["start_1"] + std::cos(a) * dx - std::sin(a) * dy, p["start_2"] + std::sin(a) * dx + std::cos(a) * dy);
+      }
+    }
+  } else {
+    const int count = static_cast<int>(std::lround(p["count"]));
+    if (count < 1) m_.fail(b.column, "CYCL DEF 220 needs the number of points Q241");
+    if (static_cast<std::uint64_t>(count) > options_.max_loop_iterations) m_.fail(b.column, "CYCL DEF 220: more points than the iteration limit");
+    double step = p["angle_step"];
+    if (step == 0 && count > 1) {
+      const double span = p["stop_angle"] - p["start_angle"];
+      step = std::fabs(span) >= 360.0 - 1e-9 || span == 0 ? 360.0 / count : span / (count - 1);
+    }
+    for (int i = 0; i < count; ++i) {
+      const double a = (p["start_angle"] + i * step) * kDeg;
+      points.emplace_back(p["centre_1"] + p["diameter"] / 2 * std::cos(a), p["centre_2"] + p["diameter"] / 2 * std::sin(a));
+    }
+  }
+  const double travel = p["surface"] + (p["move_to_clearance"] != 0 ? std::max(std::fabs(p["setup_clearance"]), std::fabs(p["second_setup_clearance"]))
+                                                                     : std::fabs(p["setup_clearance"]));
+  for (const auto& [x, y] : points) {
+    NeutralBlock nb;
+    if (m_.position().z < travel - 1e-9) {
+      nb.g(0, b.column);
+      m_.put_axes(nb, std::nullopt, std::nullopt, travel, b.column);
+      if (m_.execute(nb)) return;
+      nb.clear();
+    }
+    nb.g(0, b.column);
+    m_.put_axes(nb, x, y, std::nullopt, b.column);
+    if (m_.execute(nb)) return;
+    cycle_call(b.column);
+  }
+}
+
 void Runner::cycle_call(std::uint32_t column) {
   if (cycle_.empty()) m_.fail(column, "Cycle call with no cycle defined");
   const lowering::CycleEntry& entry = table_.cycles.at(cycle_);
@@ -1039,11 +1685,10 @@ void Runner::cycle_call(std::uint32_t column) {
     }
   }
   std::map<std::string, double> v = cycle_values_;
-  if (cycle_ != "1") {
-    for (const auto& [q, role] : entry.roles) {
-      std::string name = "_q" + q.substr(1);
-      v[role] = m_.parameters().named(name).value_or(0.0);
-    }
+  for (const auto& [q, role] : entry.roles) {
+    if (q.empty() || q[0] != 'Q') continue;  // old cycles are defined by numbered lines, not Q parameters
+    std::string name = "_q" + q.substr(1);
+    v[role] = m_.parameters().named(name).value_or(0.0);
   }
   auto get = [&](const char* role) -> double {
     auto it = v.find(role);
@@ -1055,6 +1700,76 @@ void Runner::cycle_call(std::uint32_t column) {
   double r, bottom, clearance;
   int code = 81;
   double peck = 0, dwell = 0, feed_rate = 0;
+  if (cycle_ == "251" || cycle_ == "252" || cycle_ == "253") {
+    pocket_cycle(v, column);
+    return;
+  }
+  if (cycle_ == "22" || cycle_ == "23" || cycle_ == "24") {
+    sl_cycle(v, column);
+    return;
+  }
+  if (cycle_ == "4") {
+    // POCKET MILLING (old): the rectangle about the starting position, roughed out from the
+    // inside out layer by layer below the surface, back to the starting position at the end
+    const setup::Tool* tool = options_.tools.find(m_.state().tool_in_spindle);
+    if (tool == nullptr) m_.fail(column, "Cycle 4 needs the tool's diameter: the tool is not in the tool list");
+    const double l = std::fabs(get("first_side")), w = std::fabs(get("second_side"));
+    const double rc = std::min(v.count("corner_radius") ? std::fabs(v["corner_radius"]) : 0.0, std::min(l, w) / 2.0);
+    SlContour c;
+    const double hx = l / 2 - rc, hy = w / 2 - rc;
+    const double corners[4][2] = {{hx, -hy}, {hx, hy}, {-hx, hy}, {-hx, -hy}};
+    for (int k = 0; k < 4; ++k) {
+      const int n = rc > 1e-9 ? 8 : 0;
+      for (int i = 0; i <= n; ++i) {
+        const double a = (k * 90.0 - 90.0) * kDeg + (std::numbers::pi / 2) * (n == 0 ? 0 : i) / std::max(n, 1);
+        c.points.push_back({here.x + corners[k][0] + rc * std::cos(a), here.y + corners[k][1] + rc * std::sin(a)});
+      }
+    }
+    SlData d;
+    d.setup = std::fabs(get("setup_clearance"));
+    d.surface = here.z - d.setup;
+    d.depth = -std::fabs(get("depth"));
+    d.clearance = here.z;
+    d.overlap = table_.setting("pocket_overlap_factor", 1.0);
+    d.direction = v.count("direction") && v["direction"] < 0 ? -1.0 : 1.0;
+    SlCall call;
+    call.operation = SlOperation::RoughOut;
+    call.plunge_depth = get("plunge_depth");
+    call.plunge_feed = feed(v.count("plunge_feed") ? v["plunge_feed"] : feed_);
+    call.milling_feed = feed(get("milling_feed"));
+    call.tool_radius = tool->diameter / m_.state().mm_per_unit() / 2.0;
+    sl_machine(m_, {c}, d, call, column);
+    NeutralBlock back;
+    back.g(0, column);
+    m_.put_axes(back, here.x, here.y, std::nullopt, column);
+    if (!m_.execute(back)) {
+      back.clear();
+      back.g(0, column);
+      m_.put_axes(back, std::nullopt, std::nullopt, here.z, column);
+      m_.execute(back);
+    }
+    return;
+  }
+  if (cycle_ == "5") {
+    // CIRCULAR POCKET: the tool is at the pocket centre, at the set-up clearance
+    const setup::Tool* tool = options_.tools.find(m_.state().tool_in_spindle);
+    if (tool == nullptr) m_.fail(column, "Cycle 5 needs the tool's diameter: the tool is not in the tool list");
+    CircularPocket p;
+    p.cx = here.x;
+    p.cy = here.y;
+    p.start_z = here.z;
+    p.surface_z = here.z - std::fabs(get("setup_clearance"));
+    p.bottom_z = p.surface_z - std::fabs(get("depth"));
+    p.plunge = std::fabs(get("plunge_depth"));
+    p.plunge_feed = feed(v.count("plunge_feed") ? v["plunge_feed"] : feed_);
+    p.radius = std::fabs(get("radius"));
+    p.feed = feed(get("milling_feed"));
+    p.clockwise = v.count("direction") && v["direction"] < 0;
+    p.tool_radius = tool->diameter / m_.state().mm_per_unit() / 2.0;
+    p.overlap = table_.setting("pocket_overlap_factor", 1.0);
+    circular_pocket(m_, p, column);
+    return;
+  }
   if (cycle_ == "1") {
     double setup = get("setup_clearance"), depth = get("depth");
     // the tool starts at the set-up clearance above the surface; the cycle works towards -Z

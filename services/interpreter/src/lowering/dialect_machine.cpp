@@ -13,6 +13,17 @@ DialectMachine::DialectMachine(const Options& options, canonical::Sink& sink, co
   arcs.mm = table.setting("center_arc_radius_tolerance_mm", arcs.mm);
   arcs.inch = table.setting("center_arc_radius_tolerance_inch", arcs.inch);
   executor_.set_arc_tolerance(arcs);
+  machine_functions_ = table.machine_functions;
+  for (int code : options.machine_functions) machine_functions_.emplace(code_key(code), "a machine function");
+}
+
+bool DialectMachine::machine_function(double code, std::uint32_t column) {
+  auto it = machine_functions_.find(code_key(code));
+  if (it == machine_functions_.end()) return false;
+  const std::string what = "M" + it->first + " (" + it->second + ")";
+  warn(column, what + " is a machine builder's function: read as such, it moves nothing");
+  comment("ncbridge: " + what + ": machine function, no motion");
+  return true;
 }
 
 void DialectMachine::start() {
@@ -29,6 +40,7 @@ void DialectMachine::at(std::uint32_t file, const std::string& file_name, std::u
   executor_.set_source(source_);
 }
 
+// Every error names a line and a column: an empty file's (or one before any block) is line 1.
 void DialectMachine::fail(std::uint32_t column, const std::string& message) const {
   throw InputError(locate(*file_name_, line_, column, segments_), message);
 }

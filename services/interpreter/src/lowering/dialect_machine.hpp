@@ -4,6 +4,7 @@
 // the dialect's programmable frame. A front-end evaluates its own syntax and control flow, then
 // hands NeutralBlocks to execute(); positions it puts in them go through the frame first.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,6 +53,9 @@ class DialectMachine {
   [[noreturn]] void fail(std::uint32_t column, const std::string& message) const;
   // A warning about the block being run (Options::warning); under Options::strict an error.
   void warn(std::uint32_t column, const std::string& message) const;
+  // An M code of the machine builder (the table's machine_functions, Options::machine_functions):
+  // a COMMENT and a warning naming the line (under --strict an error); false for any other code.
+  bool machine_function(double code, std::uint32_t column);
   // The block being run was joined from these lines (set after at(), which clears it).
   void continued(std::vector<LineSegment> segments) { segments_ = std::move(segments); }
 
@@ -88,6 +92,7 @@ class DialectMachine {
   std::uint32_t line_ = 0;
   std::vector<std::string> unlisted_tool_names_;
   std::vector<LineSegment> segments_;
+  std::map<std::string, std::string> machine_functions_;
 };
 
 }  // namespace ncbridge::interpreter::lowering

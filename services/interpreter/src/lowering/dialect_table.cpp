@@ -99,6 +99,11 @@ DialectTable parse_dialect_table(const std::string& yaml_text, const std::string
         for (const auto& item : root[key]) list.push_back(item.as<std::string>());
       }
     }
+    if (root["machine_functions"]) {
+      for (const auto& kv : root["machine_functions"]) {
+        t.machine_functions[kv.first.as<std::string>()] = kv.second.as<std::string>();
+      }
+    }
   } catch (const YAML::Exception& e) {
     throw std::logic_error("dialect table " + name + " is malformed: " + e.what());
   }

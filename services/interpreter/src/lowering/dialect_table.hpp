@@ -36,6 +36,9 @@ struct DialectTable {
   std::map<std::string, CodeEntry> radius_compensation;
   std::vector<std::string> unsupported_cycles;
   std::vector<std::string> ignored_calls;
+  // M codes the machine builder gives machine functions (clamps, pallet, chip conveyor, probe
+  // power): code -> what it does. Read with a warning; they move nothing.
+  std::map<std::string, std::string> machine_functions;
 
   const CodeEntry* g(double code) const;
   const CodeEntry* m(double code) const;

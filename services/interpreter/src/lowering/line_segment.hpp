@@ -15,10 +15,12 @@ struct LineSegment {
   std::uint32_t offset = 0, line = 0, column = 1;
 };
 
-// The place of 1-based `column` of a joined block (no segments: a block of one line).
+// The place of 1-based `column` of a joined block (no segments: a block of one line). Every
+// place names a line and a column: before any block (an empty file) it is line 1, and an error
+// about a whole block is at its column 1.
 inline SourceLocation locate(const std::string& file, std::uint32_t line, std::uint32_t column,
                              const std::vector<LineSegment>& segments) {
-  SourceLocation where{file, line, column};
+  SourceLocation where{file, line == 0 ? 1 : line, column == 0 ? 1 : column};
   if (column == 0) return where;
   for (const LineSegment& s : segments) {
     if (s.offset + 1 > column) break;

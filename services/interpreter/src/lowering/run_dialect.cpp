@@ -8,9 +8,9 @@
 
 namespace ncbridge::interpreter::lowering {
 
-Dialect resolve_dialect(const Options& options, std::string_view text) {
+Dialect resolve_dialect(const Options& options, std::string_view text, const std::string& name) {
   if (options.dialect != Dialect::Auto) return options.dialect;
-  return detect_dialect(text).dialect;
+  return detect_dialect_reading(text, name, options).dialect;
 }
 
 bool run_dialect(Dialect dialect, ProgramText program, const Options& options, canonical::Sink& sink) {
@@ -44,7 +44,7 @@ bool interpret_dialect_file(const std::filesystem::path& program, const Options&
   if (options.dialect == Dialect::Rs274Ngc) return false;
   Dialect dialect = options.dialect;
   if (dialect == Dialect::Auto) {
-    dialect = detect_dialect_file(program).dialect;
+    dialect = detect_dialect_reading(program, options).dialect;
     if (dialect == Dialect::Rs274Ngc) return false;
   }
   run_dialect(dialect, ProgramText::from_file(program), options, sink);
@@ -54,7 +54,7 @@ bool interpret_dialect_file(const std::filesystem::path& program, const Options&
 
 bool interpret_dialect_text(std::string_view text, const std::string& name, const Options& options,
                             canonical::Sink& sink) {
-  Dialect dialect = resolve_dialect(options, text);
+  Dialect dialect = resolve_dialect(options, text, name);
   if (dialect == Dialect::Rs274Ngc) return false;
   run_dialect(dialect, ProgramText::from_text(std::string(text), name), options, sink);
   sink.end();

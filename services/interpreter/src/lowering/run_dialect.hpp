@@ -13,8 +13,9 @@ namespace ncbridge::interpreter::lowering {
 // RS274/NGC, which the caller runs itself.
 bool run_dialect(Dialect dialect, ProgramText program, const Options& options, canonical::Sink& sink);
 
-// The dialect to run: options.dialect, or the detected one for Auto.
-Dialect resolve_dialect(const Options& options, std::string_view text);
+// The dialect to run: options.dialect, or the detected one for Auto (read, when no construct
+// decides: detect_dialect_reading).
+Dialect resolve_dialect(const Options& options, std::string_view text, const std::string& name);
 
 }  // namespace ncbridge::interpreter::lowering
 

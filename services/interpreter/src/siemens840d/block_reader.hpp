@@ -70,6 +70,7 @@ class Reader {
       std::string name;
       while (p < s.size() && ident_char(s[p])) name.push_back(lowering::upper(s[p++]));
       std::string key;
+      if (name == "$AA_MW" || name == "$AC_MEA") return measurement(s, pos, p, name, b);
       if (name.size() > 1 && name[0] == 'R' && std::all_of(name.begin() + 1, name.end(), lowering::is_digit)) {
         key = "_r" + name.substr(1);
       } else if (variables_.count(name)) {
@@ -83,10 +84,44 @@ class Reader {
     };
   }
 
+  // $AC_MEA[n]: 1 once probe n (1, 2) triggered in a MEAS/MEAW block, else 0.
+  static std::string measured_key(int probe) { return "_v_$ac_mea_" + std::to_string(probe); }
+
   static std::string variable_key(const std::string& name) {
     std::string key = "_v_";
     for (char c : name) key.push_back((c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c);
     return key;
+  }
+
+  // $AA_MW[axis] (the measured position, workpiece coordinates: LinuxCNC's #5061.. X Y Z A B C)
+  // and $AC_MEA[probe], read after MEAS=/MEAW=.
+  ExprRef measurement(std::string_view s, std::size_t& pos, std::size_t p, const std::string& name, Block& b) const {
+    const auto column = static_cast<std::uint32_t>(pos + 1);
+    std::size_t q = p;
+    while (q < s.size() && s[q] == ' ') ++q;
+    std::size_t close = q < s.size() && s[q] == '[' ? s.find(']', q) : std::string_view::npos;
+    if (close == std::string_view::npos) fail(pos, name + " needs an index in brackets");
+    std::string index = up(s.substr(q + 1, close - q - 1));
+    index.erase(std::remove(index.begin(), index.end(), ' '), index.end());
+    pos = close + 1;
+    if (name == "$AC_MEA") {
+      if (index != "1" && index != "2") fail(q, "$AC_MEA[" + index + "]: the probe is 1 or 2");
+      return b.add_named_parameter(measured_key(index == "1" ? 1 : 2), column);
+    }
+    static constexpr std::string_view kAxes = "XYZABC";
+    const std::size_t axis = index.size() == 1 ? kAxes.find(index[0]) : std::string_view::npos;
+    if (axis == std::string_view::npos) fail(q, "$AA_MW[" + index + "]: the axis is X, Y, Z, A, B or C");
+    ExprNode number;
+    number.op = ExprOp::Number;
+    number.value = 5061.0 + static_cast<double>(axis);
+    number.column = column;
+    b.nodes.push_back(number);
+    ExprNode parameter;
+    parameter.op = ExprOp::Parameter;
+    parameter.a = static_cast<ExprRef>(b.nodes.size() - 1);
+    parameter.column = column;
+    b.nodes.push_back(parameter);
+    return static_cast<ExprRef>(b.nodes.size() - 1);
   }
 
   void read(std::string_view s, std::uint32_t line, const std::string& file, SBlock& out) {

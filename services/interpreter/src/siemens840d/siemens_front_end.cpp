@@ -91,6 +91,8 @@ class Runner {
   };
   std::vector<Structure> structures_;
   void run_cycle_here(std::uint32_t column);
+  void measure(const Item& word, const SBlock& b, NeutralBlock& nb, std::optional<double> x, std::optional<double> y,
+               std::optional<double> z, bool arc);
 
   const Options& options_;
   lowering::DialectTable table_;
@@ -111,6 +113,7 @@ class Runner {
   int plane_ = 17;
   Point3 tangent_{1, 0, 0};
   bool have_tangent_ = false;
+  int measured_probe_ = 0;  // MEAS/MEAW in the block being run: its probe
   std::optional<std::string> modal_cycle_;  // MCALL
   std::map<std::string, double> modal_cycle_args_;
   std::string cycle_name_;
@@ -144,6 +147,7 @@ std::size_t Runner::add_file(ProgramText text) {
 void Runner::run(ProgramText program) {
   // R parameters exist from the start, at 0 (as on the control)
   for (int i = 0; i < 1000; ++i) m_.parameters().set_named("_r" + std::to_string(i), 0.0);
+  for (int probe = 1; probe <= 2; ++probe) m_.parameters().set_named(Reader::measured_key(probe), 0.0);
   add_file(std::move(program));
   m_.at(0, files_[0].text.name, 0);
   m_.start();
@@ -166,6 +170,7 @@ bool Runner::step() {
                        open.kind + " without its " + end);
     }
     if (options_.require_program_end) m_.fail(1, "File ended with no program end (M30/M2)");
+    m_.warn(1, "File ended with no program end (M30/M2): the program ends here");
     return false;
   }
   if (++steps_ > 50'000'000) m_.fail(1, "Program runs too long (endless loop?)");
@@ -425,6 +430,8 @@ bool Runner::run_block(SBlock& b) {
           if (it.text.empty()) m_.fail(it.column, "CALL needs a program name");
           subprogram = it.text;
           sub_column = it.column;
+        } else if (n == "BSPLINE" || n == "ASPLINE" || n == "CSPLINE") {
+          m_.fail(it.column, "not supported: spline interpolation " + n + " (a subprogram of that name is not called)");
         } else if (subprogram.empty() && n.size() > 0) {
           subprogram = n;  // a named subprogram call: PART1
           sub_column = it.column;
@@ -436,7 +443,8 @@ bool Runner::run_block(SBlock& b) {
     }
   }
   static const std::set<std::string> kWords = {"X", "Y", "Z", "A", "B", "C", "I", "J", "K", "I1", "J1", "K1", "CR",
-                                                "AR", "F", "S", "T", "D", "L", "P", "TURN", "RPL", "AP", "RP"};
+                                                "AR", "F", "S", "T", "D", "L", "P", "TURN", "RPL", "AP", "RP",
+                                                "MEAS", "MEAW"};
   for (const auto& [name, item] : words) {
     if (!kWords.count(name)) m_.fail(item->column, "Address " + name + " is not supported");
   }
@@ -483,7 +491,10 @@ bool Runner::run_block(SBlock& b) {
   for (const Item* mi : ms) {
     double code = eval(b, mi->value);
     const lowering::CodeEntry* e = table_.m(code);
-    if (e == nullptr) m_.fail(mi->column, "M" + lowering::code_key(code) + " is not a SINUMERIK M code ncbridge supports");
+    if (e == nullptr) {
+      if (m_.machine_function(code, mi->column)) continue;
+      m_.fail(mi->column, "M" + lowering::code_key(code) + " is not a SINUMERIK M code ncbridge supports");
+    }
     if (e->meta == "subprogram_return") program_return = true;
     else if (e->rs274) nb.m(static_cast<int>(*e->rs274), mi->column);
   }
@@ -596,6 +607,8 @@ bool Runner::run_block(SBlock& b) {
       nb.g(53, col);
       nb.g(motion_ == 1 ? 1 : 0, col);
     }
+  } else if (words.count("MEAS") || words.count("MEAW")) {
+    measure(words.count("MEAS") ? *words["MEAS"] : *words["MEAW"], b, nb, x, y, z, cip || ct || motion_ == 2 || motion_ == 3);
   } else if (has_axes || polar_x || ((cip || ct || motion_ == 2 || motion_ == 3) &&
                               (words.count("I") || words.count("J") || words.count("AR") || words.count("CR")))) {
     for (const char* n : {"A", "B", "C"}) {
@@ -699,6 +712,10 @@ bool Runner::run_block(SBlock& b) {
     }
   }
   if (m_.execute(nb)) return false;
+  if (measured_probe_ != 0) {
+    m_.parameters().set_named(Reader::measured_key(measured_probe_), 1.0);
+    measured_probe_ = 0;
+  }
 
   if (milling_call) {
     if (mcall) m_.fail(milling_call->column, "MCALL " + milling_call->name + ": a modal pocket cycle is not supported");
@@ -726,6 +743,25 @@ bool Runner::run_block(SBlock& b) {
   }
   if (program_return) return return_from_subprogram();
   return true;
+}
+
+// MEAS=n / MEAW=n with a straight move: measuring with probe n (1 or 2), on its rising edge
+// (contact) when n > 0, its falling edge (contact lost) when n < 0. MEAS stops the axes at the
+// trigger, MEAW lets them reach the end point; both are read as a probe move (LinuxCNC's G38.3,
+// G38.5 for a falling edge) whose trigger position, taken as the end point, is what
+// $AA_MW[axis] reads afterwards (#5061..), with $AC_MEA[n] = 1.
+void Runner::measure(const Item& word, const SBlock& b, NeutralBlock& nb, std::optional<double> x,
+                     std::optional<double> y, std::optional<double> z, bool arc) {
+  const double n = eval(b, word.value);
+  const int probe = static_cast<int>(std::lround(std::fabs(n)));
+  if (probe < 1 || probe > 2 || std::fabs(std::fabs(n) - probe) > 1e-9) {
+    m_.fail(word.column, word.name + "=" + lowering::code_key(n) + ": the probe is 1 or 2 (-1, -2: falling edge)");
+  }
+  if (arc) m_.fail(word.column, "not supported: measuring (" + word.name + "=) on a circle");
+  if (!x && !y && !z) m_.fail(word.column, word.name + "= needs an X, Y or Z end point");
+  nb.g(n > 0 ? 38.3 : 38.5, word.column);
+  m_.put_axes(nb, x, y, z, word.column);
+  measured_probe_ = probe;
 }
 
 // Skips forward from the current block to the first of `ends` at the same nesting depth

@@ -15,7 +15,10 @@
 //    instances of it are unregistered (which frees the writer's durable copy) — at once for an
 //    intermediate stage, after the retention policy for final results (part21) and statuses;
 //  - announces the worker (WorkerPresence), and its health as status samples with an empty job
-//    id (subkey "<stage>/<worker_id>"): "ready" at start, "stopped" on a clean exit.
+//    id (subkey "<stage>/<worker_id>"): "ready" at start, "stopped" on a clean exit;
+//  - stops a job that runs longer than RunnerOptions::max_job_time (--max-job-seconds) with an
+//    ERROR status naming it, and goes on: the limit is checked between samples, on every
+//    publish and progress report, and wherever a stage calls JobContext::check_time.
 // The loop sleeps on one wait set over all its readers: no polling while idle.
 #include <chrono>
 #include <cstdint>
@@ -23,6 +26,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -52,13 +56,28 @@ struct JobInput {
   std::vector<std::uint32_t> kinds;    // the envelopes' kind, beside each payload
 };
 
+// Thrown by JobContext::check_time once a job has run longer than its worker allows.
+class JobTimeLimit : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // What a stage's work on one job gets besides its input.
 class JobContext {
  public:
   using Progress = std::function<void(double)>;
-  // `outputs`: the stage's output topic first, then any others it may publish on.
-  JobContext(std::vector<bus::Writer*> outputs, std::string job_id, Progress progress)
-      : outputs_(std::move(outputs)), job_id_(std::move(job_id)), progress_(std::move(progress)) {}
+  using Clock = std::chrono::steady_clock;
+  // `outputs`: the stage's output topic first, then any others it may publish on. A job given a
+  // `time_limit` (> 0) may run that long from now.
+  JobContext(std::vector<bus::Writer*> outputs, std::string job_id, Progress progress,
+             std::chrono::milliseconds time_limit = std::chrono::milliseconds(0))
+      : outputs_(std::move(outputs)), job_id_(std::move(job_id)), progress_(std::move(progress)),
+        started_(Clock::now()), time_limit_(time_limit) {}
+
+  // Throws JobTimeLimit (naming the job and the limit) once the job has run longer than its
+  // time limit. Called by the runner between samples and by publish and progress; a stage whose
+  // work between those can be long calls it as it goes (the recogniser between layers).
+  void check_time() const;
 
   // Publishes one sample of this job on the stage's output topic (key = the job id).
   void publish(std::string_view subkey, std::uint64_t seq, std::uint32_t kind, bool last, std::string_view payload) {
@@ -67,7 +86,10 @@ class JobContext {
   // The same on another of the stage's outputs (StageSpec::other_outputs).
   void publish_on(bus::Topic topic, std::string_view subkey, std::uint64_t seq, std::uint32_t kind, bool last,
                   std::string_view payload);
-  void progress(double fraction) { progress_(fraction); }  // 0..1; rate-limited by the runner
+  void progress(double fraction) {  // 0..1; rate-limited by the runner
+    check_time();
+    progress_(fraction);
+  }
   const std::string& job_id() const { return job_id_; }
 
   // The instances (topic, subkey) this job published, and how many payload bytes.
@@ -78,6 +100,8 @@ class JobContext {
   std::vector<bus::Writer*> outputs_;
   std::string job_id_;
   Progress progress_;
+  Clock::time_point started_;
+  std::chrono::milliseconds time_limit_;
   std::set<std::pair<bus::Topic, std::string>> published_;
   std::uint64_t bytes_ = 0;
 };
@@ -118,6 +142,9 @@ struct RunnerOptions {
   std::chrono::milliseconds idle{200};
   // After start, how long to listen for the other workers of the stage before taking jobs.
   std::chrono::milliseconds settle{300};
+  // Longest a job may run here, from its start (its first sample for a streaming stage); 0: no
+  // limit. Over it the job ends with an ERROR status and the worker goes on.
+  std::chrono::milliseconds max_job_time{std::chrono::minutes(10)};
   Retention retention;
 };
 

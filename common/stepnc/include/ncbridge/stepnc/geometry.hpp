@@ -1,7 +1,8 @@
 #pragma once
 // The ISO 10303-42 geometry the ISO 14649 model uses, as value types, lengths in millimetres.
 // Names follow the Part 42 entities (CARTESIAN_POINT, DIRECTION, AXIS2_PLACEMENT_3D, PLANE,
-// POLYLINE, TRIMMED_CURVE on a CIRCLE, COMPOSITE_CURVE, BLOCK).
+// POLYLINE, TRIMMED_CURVE on a CIRCLE, B_SPLINE_CURVE_WITH_KNOTS, COMPOSITE_CURVE, BLOCK).
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -58,9 +59,34 @@ struct TrimmedCircle {
   friend bool operator==(const TrimmedCircle&, const TrimmedCircle&) = default;
 };
 
-// A COMPOSITE_CURVE: segments joined end to start (lines as polylines, arcs as trimmed circles).
-// A composite of one polyline is written as a bare POLYLINE.
-using CurveSegment = std::variant<Polyline, TrimmedCircle>;
+// A B_SPLINE_CURVE_WITH_KNOTS of `degree` over its control points; with weights (one per
+// control point, all positive) it is also a RATIONAL_B_SPLINE_CURVE (a NURBS), written as the
+// complex instance of both. The knots are the distinct knot values, ascending, each repeated
+// knot_multiplicities times; the curve runs over [knots.front(), knots.back()].
+enum class KnotType { UniformKnots, QuasiUniformKnots, PiecewiseBezierKnots, Unspecified };
+struct BSplineCurve {
+  int degree = 1;
+  std::vector<CartesianPoint> control_points;
+  std::vector<int> knot_multiplicities;
+  std::vector<double> knots;
+  KnotType knot_spec = KnotType::Unspecified;
+  std::vector<double> weights;  // empty: not rational
+  friend bool operator==(const BSplineCurve&, const BSplineCurve&) = default;
+};
+
+// The curve's point at parameter u (de Boor's algorithm on the weighted points). The curve must
+// be valid (bspline_problem() empty).
+CartesianPoint bspline_point(const BSplineCurve& curve, double u);
+// What makes `curve` no B-spline (ISO 10303-42 constraints_param_b_spline: degree >= 1, as many
+// knots counted with multiplicity as control points + degree + 1, multiplicities at most
+// degree + 1 and at least 1 inside, knots ascending, weights positive), or "" when it is one.
+std::string bspline_problem(const BSplineCurve& curve);
+// Points along the curve, ends included, whose chords stay within `tolerance` of it.
+std::vector<CartesianPoint> bspline_polyline(const BSplineCurve& curve, double tolerance);
+
+// A COMPOSITE_CURVE: segments joined end to start (lines as polylines, arcs as trimmed circles,
+// splines as B-spline curves). A composite of one polyline is written as a bare POLYLINE.
+using CurveSegment = std::variant<Polyline, TrimmedCircle, BSplineCurve>;
 struct CompositeCurve {
   std::vector<CurveSegment> segments;
   friend bool operator==(const CompositeCurve&, const CompositeCurve&) = default;

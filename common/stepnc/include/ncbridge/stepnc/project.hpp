@@ -1,6 +1,6 @@
 #pragma once
 // The ISO 14649-10 project: PROJECT -> WORKPLAN -> executables (MACHINING_WORKINGSTEP,
-// RAPID_MOVEMENT), WORKPIECE (with its rawpiece), SETUP, and the tables the executables refer
+// RAPID_MOVEMENT, WORKPIECE_PROBING), WORKPIECE (with its rawpiece), SETUP, and the tables the executables refer
 // to by index. One value holds a whole CC1 or CC2 program; the step_writer maps it to Part 21
 // and back (stepnc_file.hpp).
 #include <cstdint>
@@ -42,7 +42,30 @@ struct RapidMovement {
   friend bool operator==(const RapidMovement&, const RapidMovement&) = default;
 };
 
-using Executable = std::variant<MachiningWorkingstep, RapidMovement>;
+// NC_VARIABLE: a variable of the controller, by name (its initial value when known).
+struct NcVariable {
+  std::string its_name;
+  std::optional<double> initial_value;
+  friend bool operator==(const NcVariable&, const NcVariable&) = default;
+};
+
+// WORKPIECE_PROBING (ISO 14649-10 touch probing, a workingstep and operation of its own): the
+// probe TOUCH_PROBE(its_probe) starts at start_position, moves along its_direction and is
+// expected to touch the workpiece (the project's) within expected_value; the result goes to
+// measured_offset. its_toolpath and its_tool_direction are not used ($).
+struct WorkpieceProbing {
+  std::string its_id;
+  Plane its_secplane;
+  NcVariable measured_offset;
+  Axis2Placement3d start_position;
+  Direction its_direction;
+  TolerancedLengthMeasure expected_value;
+  std::string its_probe;  // TOUCH_PROBE.its_id
+  SourceLines source;
+  friend bool operator==(const WorkpieceProbing&, const WorkpieceProbing&) = default;
+};
+
+using Executable = std::variant<MachiningWorkingstep, RapidMovement, WorkpieceProbing>;
 
 struct Workplan {
   std::string its_id = "MAIN WORKPLAN";

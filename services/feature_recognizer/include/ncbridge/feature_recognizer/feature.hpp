@@ -89,6 +89,10 @@ struct RecognizedFeature {
   double slot_width = 0;                 // Slot
   std::vector<Point2> slot_course;       // Slot: its centre line (two points for a straight slot)
   std::vector<RecognizedOperation> operations;  // in machining order
+  // Made beyond the recogniser's work limit (Options::work_per_point): a `region` of cuts not
+  // analysed (its box, levels and operations), or a feature whose top or context was not
+  // computed exactly (docs/recognition.md, "Bounded cost").
+  bool approximate = false;
 
   bool closed() const;  // holes, closed pockets and slots with no open end
 };

@@ -40,6 +40,9 @@ struct Options {
   std::function<void(const SourceLocation& where, const std::string& message)> warning;
   // Refuse (a located InputError) what would otherwise be read with a warning.
   bool strict = false;
+  // M codes that are the machine builder's machine functions (no motion), beyond the dialect
+  // table's list (`machine_functions:`): read with a warning.
+  std::vector<int> machine_functions;
 };
 
 // Interprets the program in `program`, streaming calls into `sink` (source_file, call..., end).

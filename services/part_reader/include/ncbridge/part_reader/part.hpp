@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "ncbridge/stepnc/geometry.hpp"
@@ -48,6 +49,7 @@ struct Feature {
   FeatureKind kind = FeatureKind::RoundHole;
   std::string source;  // where it was read: "#1864" (AP224 instance), "faces 10, 24" (B-rep)
   std::string name;    // the file's own name for it, when it has one
+  std::uint32_t line = 0;  // the line of the file that defines it (AP224 instances), 0 when none
   // ISO 14649 placement: the origin at the feature's top (a hole's axis where it opens, a
   // pocket's or profile's outline centre, a slot's start), z pointing out of the material (the
   // side the tool comes from), x along the feature's length.
@@ -59,6 +61,9 @@ struct Feature {
   HoleBottom bottom = HoleBottom::Flat;
   double tip_angle = 0;      // Conical: the included angle in degrees (118 for a twist drill's point)
   double bottom_radius = 0;  // FlatWithRadius, Spherical
+  // The diameter's tolerance as the file gives it (upper and lower deviation, mm); B-rep files
+  // carry none.
+  std::optional<std::pair<double, double>> diameter_tolerance;
 
   // Outline in the placement's xy plane: Rectangle (length along x, width along y, centred on
   // the origin), Circle (diameter), General (`boundary`, closed, counter-clockwise).
@@ -133,6 +138,11 @@ struct Part {
   std::string file_units;  // the file's length unit: "mm", "inch", "m", ...
   std::optional<PartStock> stock;  // the file's own
   std::optional<Box> bounds;       // the solid's axis-aligned box (B-rep parts)
+  // B-rep parts: the outline seen from above (the outer loop of the faces the part stands on,
+  // setup XY, counter-clockwise) and the heights of its top and bottom. The stock-dependent
+  // features (the top face to mill, the outside profile) come from these: add_stock_features.
+  std::vector<OutlineVertex> footprint;
+  double top_z = 0, bottom_z = 0;
   std::vector<Feature> features;
   std::vector<Compound> compounds;
   std::vector<ListedFeature> listed;
@@ -150,6 +160,11 @@ struct ReadOptions {
 
 // The axis-aligned box around a stock (a cylinder's box when it is one).
 Box bounding_box(const PartStock& stock);
+
+// For a B-rep part cut from `stock` (setup frame): the planar face that mills the stock's top
+// down to the part's top, and the general outside profile when the stock reaches beyond the
+// part's outline. Both come first in Part::features. No-op for parts without a footprint.
+void add_stock_features(Part& part, const Box& stock);
 
 std::string_view to_string(FeatureKind kind);  // the ISO 14649 entity name in lower case
 std::string_view to_string(HoleBottom bottom);  // "through", "flat", "conical", ...

@@ -30,6 +30,9 @@ class SetupFrame {
   std::array<double, 3> t_;
 };
 
+// Moves everything of a part read in the setup frame (features, stock, bounds) by `offset`.
+void move_part(Part& part, const std::array<double, 3>& offset);
+
 // The setup that brings a part-frame direction to +Z when it is one of the six axis
 // directions (within 1e-6), else nothing.
 std::optional<SetupUp> setup_facing(const stepnc::Direction& part_direction);

@@ -1,0 +1,16 @@
+(Estlcam style program, written for ncbridge's tests)
+(Project CLOCK_FACE)
+(Tool change to 2mm end mill)
+G21
+G90
+G94
+M03 S20000
+G00 X0.0000 Y0.0000 Z5.0000
+G00 X20.0000 Y20.0000
+G01 Z-0.5000 F300
+G01 X60.0000 F800
+G02 X60.0000 Y40.0000 I0.0000 J10.0000
+G01 X20.0000
+G00 Z5.0000
+M05
+M30

@@ -1,0 +1,38 @@
+0 BEGIN PGM APPR_DEP MM
+1 ; one outside contour three times: approached and left on a tangential line, a tangential
+2 ; arc, and a perpendicular line with a departure on an arc and a tangential line
+3 BLK FORM 0.1 Z X+0 Y+0 Z-20
+4 BLK FORM 0.2 X+100 Y+80 Z+0
+5 TOOL CALL 1 Z S3000
+6 L Z+20 R0 FMAX M3
+7 L X+0 Y+30 R0 FMAX
+8 L Z-5 R0 F200
+9 APPR LT X+20 Y+40 LEN10 RL F300
+10 L Y+60
+11 L X+80
+12 L Y+20
+13 L X+20
+14 L Y+40
+15 DEP LT LEN10
+16 L Z+20 R0 FMAX
+17 L X+0 Y+30 R0 FMAX
+18 L Z-8 R0 F200
+19 APPR CT X+20 Y+40 CCA90 R+10 RL F300
+20 L Y+60
+21 L X+80
+22 L Y+20
+23 L X+20
+24 L Y+40
+25 DEP CT CCA90 R+10
+26 L Z+20 R0 FMAX
+27 L X+0 Y+40 R0 FMAX
+28 L Z-10 R0 F200
+29 APPR LN X+20 Y+40 LEN8 RL F300
+30 L Y+60
+31 L X+80
+32 L Y+20
+33 L X+20
+34 L Y+40
+35 DEP LCT X+0 Y+70 R+10
+36 L Z+20 R0 FMAX M30
+37 END PGM APPR_DEP MM

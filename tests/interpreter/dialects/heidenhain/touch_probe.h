@@ -1,0 +1,17 @@
+0 BEGIN PGM TOUCH_PROBE MM
+1 ; TCH PROBE 0 REFERENCE PLANE: probe the top from above, then a side, then cut at the
+2 ; probed height. The probe goes 20 mm (MP6130) from the pre-position at 100 mm/min (MP6120).
+3 TOOL CALL 1 Z S3000
+4 L Z+50 R0 FMAX
+5 TCH PROBE 0.0 REF. PLANE Q10 Z-
+6 TCH PROBE 0.1 X+15 Y+25 Z+5
+7 L Z+50 FMAX
+8 TCH PROBE 0.0 BEZUGSEBENE Q11 X+
+9 TCH PROBE 0.1 X-40 Y+25 Z-5
+10 L Z+50 FMAX
+11 L X+0 Y+0 FMAX M3
+12 L Z+Q10 F400
+13 L X+Q11
+14 L Y+30
+15 L Z+50 FMAX
+16 END PGM TOUCH_PROBE MM

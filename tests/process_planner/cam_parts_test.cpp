@@ -1,0 +1,83 @@
+// `ncbridge plan` on the five CAM parts of the shared corpus (FreeCAD's part.step): the report's
+// features are the truth's (F1 = 1.0 with centres and sizes within 0.05 mm and depths exact),
+// the CC2 file passes the schema check. Each part is placed in its stock as its stock.json says
+// (part_bbox_min): four of the five STEP files are not in the program frame.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "cam_truth.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kShared = NCBRIDGE_SHARED_DIR;
+const fs::path kNcbridge = fs::path(NCBRIDGE_BINARY_DIR) / "bin" / "ncbridge";
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int run(const std::string& arguments, const fs::path& err) {
+  const std::string command = "SOURCE_DATE_EPOCH=1700000000 '" + kNcbridge.string() + "' " + arguments + " 2>'" + err.string() + "'";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+class CamPart : public ::testing::TestWithParam<std::string> {};
+
+}  // namespace
+
+TEST_P(CamPart, PlanFindsTheTruthsFeaturesInTheStep) {
+  const fs::path part = kShared / "corpus" / "cam" / GetParam();
+  const fs::path dir = fs::temp_directory_path() / ("ncbridge_plan_cam_" + GetParam());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const int code = run("plan '" + (part / "part.step").string() + "' --stock '" + (part / "stock.json").string() + "' --tools '" +
+                           (part / "tools.json").string() + "' -o '" + (dir / "cc2.stp").string() + "' --report '" +
+                           (dir / "report.json").string() + "' --html '" + (dir / "page.html").string() + "'",
+                       dir / "err.txt");
+  ASSERT_EQ(code, 0) << read_file(dir / "err.txt");
+  const auto report = nlohmann::json::parse(read_file(dir / "report.json"));
+  const auto truth = nlohmann::json::parse(read_file(part / "truth.json"));
+  const auto score = ncbridge::testing::score_against_truth(report["features"], truth["features"]);
+  std::string missed;
+  for (const auto& u : score.unmatched) missed += "\n  " + u;
+  EXPECT_EQ(score.matched, score.truth) << missed;
+  EXPECT_EQ(score.reported, score.truth) << report["features"].dump(1);
+  EXPECT_DOUBLE_EQ(score.f1(), 1.0);
+  EXPECT_EQ(run("check '" + (dir / "cc2.stp").string() + "'", dir / "check.txt"), 0) << read_file(dir / "check.txt");
+  EXPECT_NE(read_file(dir / "check.txt").find(", 0 errors, 0 warnings"), std::string::npos) << read_file(dir / "check.txt");
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, CamPart,
+                         ::testing::Values("p01_block_reference", "p02_plate_center_zero", "p03_bracket_steps", "p04_open_pockets",
+                                           "p05_slots"));
+
+TEST(CamTruthScore, ASizeOrCentreOffByMoreThanTheToleranceIsNotAMatch) {
+  const auto truth = nlohmann::json::parse(read_file(kShared / "corpus" / "cam" / "p01_block_reference" / "truth.json"))["features"];
+  nlohmann::json hole = {{"id", "HOLE1 D=10MM"}, {"type", "round_hole"}, {"center_xy", {75.0, 60.0}}, {"top_z", 30.0}, {"bottom_z", 0.0},
+                         {"dimensions", {{"diameter", 10.0}}}};
+  const nlohmann::json f6 = nlohmann::json::array({truth[5]});
+  EXPECT_EQ(ncbridge::testing::score_against_truth(nlohmann::json::array({hole}), f6).matched, 1);
+  auto moved = hole;
+  moved["center_xy"] = {75.06, 60.0};
+  EXPECT_EQ(ncbridge::testing::score_against_truth(nlohmann::json::array({moved}), f6).matched, 0);
+  auto wider = hole;
+  wider["dimensions"]["diameter"] = 10.06;
+  EXPECT_EQ(ncbridge::testing::score_against_truth(nlohmann::json::array({wider}), f6).matched, 0);
+  auto shallower = hole;
+  shallower["bottom_z"] = 0.001;
+  EXPECT_EQ(ncbridge::testing::score_against_truth(nlohmann::json::array({shallower}), f6).matched, 0);
+}
