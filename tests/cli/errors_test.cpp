@@ -74,6 +74,10 @@ TEST(CommandLine, UnknownOptionsNameTheNearestOne) {
          "convert: unknown option --outptu (did you mean --output?)"});
   check({{"canon", (kPlate / "plate.ngc").string(), "--tool", "t.json"}, 2, "canon: unknown option --tool (did you mean --tools?)"});
   check({{"diff", "a.stp", "b.stp", "--tolerence", "1"}, 2, "diff: unknown option --tolerence (did you mean --tolerance?)"});
+  // In a command of a command, the message names both and knows the inner one's options.
+#ifdef NCBRIDGE_HAVE_SERVICES
+  check({{"capture", "linuxcnc", "--bogus"}, 2, "capture linuxcnc: unknown option --bogus (see ncbridge capture linuxcnc --help)"});
+#endif
   // A negative number is a value, not an option.
   const ProgramRun negative = ncbridge({"convert", (kPlate / "plate.ngc").string(), "--tools", (kPlate / "tools.json").string(),
                                         "--stock", (kPlate / "stock.json").string(), "--security-plane", "-5", "-o", "/dev/null"});

@@ -116,7 +116,9 @@ TEST(OutputSet, AReplacedFileKeepsItsPermissionsAndOwner) {
   fs::permissions(dir / "a.stp", fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
   // Root replacing someone else's file leaves it theirs.
   const bool root = ::geteuid() == 0;
-  if (root) ASSERT_EQ(::chown((dir / "a.stp").c_str(), 4321, 4321), 0);
+  if (root) {
+    ASSERT_EQ(::chown((dir / "a.stp").c_str(), 4321, 4321), 0);
+  }
   OutputSet outputs;
   outputs.add((dir / "a.stp").string(), "-o").write("new");
   outputs.commit();
