@@ -88,7 +88,7 @@ TEST(CommandLine, MissingOrBadValuesAreUsageErrors) {
   const std::string program = (kPlate / "plate.ngc").string();
   check({{"convert", program}, 2, "convert: --output is required (see ncbridge convert --help)"});
   check({{"convert", program, "-o", "x.stp", "--level", "cc3"}, 2, "convert: --level: cc3 not in {cc1,cc2}"});
-  check({{"convert", program, "-o", "x.stp"}, 2, "converting a program needs --tools and --stock"});
+  check({{"convert", program, "-o", "x.stp"}, 2, "converting a program needs --tools (or --tool-table) and --stock"});
   check({{"convert", program, "--tools", (kPlate / "tools.json").string(), "--stock", (kPlate / "stock.json").string(), "-o",
           "x.stp", "--html", "x.html"},
          2, "--html needs --level cc2"});
