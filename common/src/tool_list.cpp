@@ -137,7 +137,7 @@ ToolList parse_tool_list(std::string_view text, const std::string& file) {
     t.feed = optional_number(node, "feed", file).value_or(0);
     t.plunge_feed = optional_number(node, "plunge", file).value_or(optional_number(node, "plunge_feed", file).value_or(0));
     for (const char* key : {"diameter", "length", "corner_radius", "flute_length", "rpm", "spindle_rpm", "feed", "plunge", "plunge_feed"}) {
-      if (node[key] && node[key].as<double>() < 0) {
+      if (optional_number(node, key, file).value_or(0) < 0) {  // (a key without a value is null, not a number)
         throw InputError(location_of(node[key], file), std::string(key) + " must not be negative");
       }
     }

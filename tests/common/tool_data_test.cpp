@@ -137,6 +137,12 @@ TEST(ToolData, ErrorsNameTheFileLineAndColumn) {
   EXPECT_EQ(error_of([&] { read_tool_list(kPlate / "tools.tbl"); }).file, (kPlate / "tools.tbl").string());
 }
 
+TEST(ToolData, AKeyWithoutAValueIsNotGiven) {  // found by fuzz_tool_list: it threw a yaml-cpp exception
+  const ToolList tools = parse_tool_list("- {number: 1, diameter: 6, length: }\n", "t.yaml");
+  EXPECT_DOUBLE_EQ(tools.find(1)->length, 0);
+  EXPECT_EQ(error_of([] { parse_tool_list("- {number: 1, diameter: -6}\n", "t.yaml"); }).line, 1u);
+}
+
 TEST(ToolData, AFusionInchToolAndTypesWithoutACounterpart) {
   const ToolList tools = parse_fusion_tool_library(R"({"data": [
     {"type": "bull nose end mill", "unit": "inches", "description": "1/2 bull",
