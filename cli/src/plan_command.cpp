@@ -192,7 +192,7 @@ int run_plan(const PlanArguments& args) {
     report["workingsteps"] = workingsteps;
     report["tools"] = tool_list;
     report["features"] = cc2_features_json(cc2);
-    const json sections = part_sections(part, plan, cc2);
+    const json sections = part_sections(part, plan);
     for (const auto& [key, value] : sections.items()) report[key] = value;
     report["warnings"] = warning_list;
     report["timings_ms"] = {{"read_part", ms(t_read - t0)}, {"plan", ms(t_planned - t_read)}, {"step_writer", ms(t_written - t_planned)},

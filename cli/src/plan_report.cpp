@@ -246,9 +246,8 @@ Cc2Output plan_as_cc2(const pr::Part& part, const process_planner::Plan& plan, c
   return out;
 }
 
-nlohmann::ordered_json part_sections(const pr::Part& part, const process_planner::Plan& plan, const Cc2Output& cc2) {
+nlohmann::ordered_json part_sections(const pr::Part& part, const process_planner::Plan& plan) {
   using json = nlohmann::ordered_json;
-  (void)cc2;
   json sections;
   json not_planned = json::array();
   for (const auto& f : part.features) {

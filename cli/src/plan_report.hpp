@@ -19,6 +19,6 @@ Cc2Output plan_as_cc2(const part_reader::Part& part, const process_planner::Plan
 
 // The part's sections of the report: features not planned (their axis and the setup they need),
 // compounds (counterbores, countersinks), listed features with their parameters.
-nlohmann::ordered_json part_sections(const part_reader::Part& part, const process_planner::Plan& plan, const Cc2Output& cc2);
+nlohmann::ordered_json part_sections(const part_reader::Part& part, const process_planner::Plan& plan);
 
 }  // namespace ncbridge::cli

@@ -1,12 +1,13 @@
 // Parts built with Open CASCADE in the test and exported as STEP, then read back: the
 // SolidWorks-style circular pocket (its cylinder split in two faces, its circles in halves on the
 // top face), a hole in a pocket's floor (two features, not one), drill points and a countersink,
-// a rounded rectangular pocket; and a STEP file without a solid.
+// a rounded rectangular pocket, a part written in metres; and a STEP file without a solid.
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
@@ -22,10 +23,12 @@
 #include <TopoDS_Face.hxx>
 #include <gp_Ax2.hxx>
 #include <gp_Pln.hxx>
+#include <gp_Trsf.hxx>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/part_reader/brep_reader.hpp"
@@ -178,6 +181,24 @@ TEST(BuiltParts, DrillPointsAndACountersink) {
   EXPECT_EQ(read.compounds[0].kind, pr::CompoundKind::Countersink);
 }
 
+TEST(BuiltParts, AnIslandInAPocketIsSaidOnceWithItsFaces) {
+  // A pocket 60 x 40, 8 deep, with a round boss R8 left standing in it, up to the top.
+  TopoDS_Shape part = BRepAlgoAPI_Cut(block(), BRepPrimAPI_MakeBox(gp_Pnt(20, 20, 12), 60, 40, 20).Shape()).Shape();
+  part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(50, 40, 12), gp_Dir(0, 0, 1)), 8, 8).Shape()).Shape();
+  const pr::Part read = pr::read_brep_file(written(part, "pocket_with_island.stp"));
+  const auto pockets = of_kind(read, pr::FeatureKind::ClosedPocket);
+  ASSERT_EQ(pockets.size(), 1u);
+  EXPECT_NEAR(pockets[0]->length, 60, 1e-6);
+  EXPECT_NEAR(pockets[0]->depth, 8, 1e-6);
+  std::vector<std::string> islands;
+  for (const auto& w : read.warnings) {
+    if (w.message.find("island") != std::string::npos) islands.push_back(w.message);
+  }
+  ASSERT_EQ(islands.size(), 1u);
+  EXPECT_TRUE(islands[0].starts_with("an island (boss, face")) << islands[0];
+  EXPECT_TRUE(of_kind(read, pr::FeatureKind::RoundHole).empty());
+}
+
 TEST(BuiltParts, AStepFileWithoutASolidIsAnError) {
   const TopoDS_Shape face = BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 0, 10, 0, 10).Shape();
   const fs::path file = written(face, "just_a_face.stp");
@@ -200,4 +221,36 @@ TEST(BuiltParts, NotAStepFileIsLocated) {
   } catch (const ncbridge::InputError& e) {
     EXPECT_EQ(e.where().line, 1u) << e.what();
   }
+}
+
+TEST(BuiltParts, AFileInMetresIsReadInMillimetres) {
+  // The part a thousand times smaller, written in millimetres, then its unit made the metre: the
+  // file a CAD system working in metres writes (100 mm as 0.1).
+  gp_Trsf to_metres;
+  to_metres.SetScale(gp_Pnt(0, 0, 0), 0.001);
+  const TopoDS_Shape part = BRepBuilderAPI_Transform(BRepAlgoAPI_Cut(block(), tool(30, 40, 5, -5)).Shape(), to_metres).Shape();
+  const fs::path file = written(part, "block_in_metres.stp");
+  std::string text;
+  {
+    std::ifstream in(file);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string mm = "SI_UNIT(.MILLI.,.METRE.)";
+  const auto at = text.find(mm);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, mm.size(), "SI_UNIT($,.METRE.)");
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
+  ASSERT_NE(text.find("(0.1,"), std::string::npos) << "100 mm written as 0.1";
+
+  const pr::Part read = pr::read_brep_file(file);
+  EXPECT_EQ(read.file_units, "m");
+  ASSERT_TRUE(read.bounds);
+  EXPECT_NEAR(read.bounds->max[0], 100, 1e-6);
+  EXPECT_NEAR(read.bounds->max[2], 20, 1e-6);
+  const auto holes = of_kind(read, pr::FeatureKind::RoundHole);
+  ASSERT_EQ(holes.size(), 1u);
+  EXPECT_NEAR(holes[0]->diameter, 10, 1e-6);
+  EXPECT_NEAR(holes[0]->depth, 20, 1e-6);
+  EXPECT_NEAR(holes[0]->placement.location.x, 30, 1e-6);
+  EXPECT_EQ(holes[0]->bottom, pr::HoleBottom::Through);
 }

@@ -81,3 +81,35 @@ TEST(CamTruthScore, ASizeOrCentreOffByMoreThanTheToleranceIsNotAMatch) {
   shallower["bottom_z"] = 0.001;
   EXPECT_EQ(ncbridge::testing::score_against_truth(nlohmann::json::array({shallower}), f6).matched, 0);
 }
+
+TEST(CamStockStep, TheStockAsAStepSolid) {
+  const fs::path dir = fs::temp_directory_path() / "ncbridge_plan_cam_stock_step";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // p01's part is modelled in its stock's frame: the stock solid is enough.
+  const fs::path p01 = kShared / "corpus" / "cam" / "p01_block_reference";
+  ASSERT_EQ(run("plan '" + (p01 / "part.step").string() + "' --stock-step '" + (p01 / "stock.step").string() + "' --tools '" +
+                    (p01 / "tools.json").string() + "' -o '" + (dir / "p01.stp").string() + "' --report '" + (dir / "p01.json").string() + "'",
+                dir / "err.txt"),
+            0)
+      << read_file(dir / "err.txt");
+  const auto report = nlohmann::json::parse(read_file(dir / "p01.json"));
+  EXPECT_EQ(report["stock"]["min"], nlohmann::json::array({-3.0, -3.0, 0.0}));
+  EXPECT_EQ(report["stock"]["max"], nlohmann::json::array({103.0, 83.0, 32.0}));
+  const auto truth = nlohmann::json::parse(read_file(p01 / "truth.json"));
+  EXPECT_EQ(ncbridge::testing::score_against_truth(report["features"], truth["features"]).matched, 7);
+
+  // p02's part is modelled at its corner, the stock around the program zero: refused until placed.
+  const fs::path p02 = kShared / "corpus" / "cam" / "p02_plate_center_zero";
+  const std::string args = "plan '" + (p02 / "part.step").string() + "' --stock-step '" + (p02 / "stock.step").string() + "' --tools '" +
+                           (p02 / "tools.json").string() + "' -o '" + (dir / "p02.stp").string() + "' --report '" + (dir / "p02.json").string() + "'";
+  EXPECT_EQ(run(args, dir / "err.txt"), 1);
+  EXPECT_NE(read_file(dir / "err.txt").find("does not lie inside the stock"), std::string::npos) << read_file(dir / "err.txt");
+  EXPECT_FALSE(fs::exists(dir / "p02.stp"));
+  ASSERT_EQ(run(args + " --part-offset=-75,-50,-20", dir / "err.txt"), 0) << read_file(dir / "err.txt");
+  const auto placed = nlohmann::json::parse(read_file(dir / "p02.json"));
+  const auto truth2 = nlohmann::json::parse(read_file(p02 / "truth.json"));
+  const auto score = ncbridge::testing::score_against_truth(placed["features"], truth2["features"]);
+  EXPECT_EQ(score.matched, score.truth);
+  EXPECT_EQ(score.reported, score.truth);
+}

@@ -1,10 +1,14 @@
 // `ncbridge plan` end to end: the CC2 file passes the schema check and is the same bytes every
 // run, the report carries the same `features` array as `convert --report` (the recogniser's
-// scorer reads it), bad input stops the run with a located error and writes nothing.
+// scorer reads it), bad input stops the run with a located error and writes nothing; a plan of
+// drilled holes only goes on through `ncbridge gcode` to a program LinuxCNC's rs274 runs.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +17,7 @@
 #include <string>
 
 #include "ncbridge/feature_recognizer/scoring.hpp"
+#include "support/run_program.hpp"
 
 namespace fr = ncbridge::feature_recognizer;
 namespace fs = std::filesystem;
@@ -163,4 +168,60 @@ TEST(PlanCommand, DanglingReferenceInAnAp224FileIsALocatedError) {
   EXPECT_NE(r.err.find("dangling.stp:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("#9999"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "x.stp"));
+}
+
+// Until the toolpath generator lands, `ncbridge gcode` writes a CC2 file's drilling-family
+// operations (as canned cycles) and nothing else: a part of through holes goes all the way.
+TEST(PlanCommand, DrilledHolesGoOnToAProgramRs274Runs) {
+  const fs::path rs274 = ncbridge::testing::find_on_path("rs274");
+  if (rs274.empty()) {
+    if (ncbridge::testing::in_ci()) FAIL() << "rs274 not installed under CI=true (scripts/install-deps.sh --tests installs linuxcnc-uspace)";
+    GTEST_SKIP() << "SKIPPED: rs274 not installed (Debian package linuxcnc-uspace)";
+  }
+  const fs::path dir = work_dir();
+  const fs::path plate = kShared / "corpus" / "brep" / "occt_bug3883_xr2-ct-214_plate.stp";
+  auto r = run("plan " + q(plate) + " --tools " + q(kTools / "spot_and_drill_d10.json") + " -o " + q(dir / "plate_cc2.stp") +
+                   " --report " + q(dir / "plate.json"),
+               dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(read_file(dir / "plate.json"));
+  ASSERT_EQ(report["features"].size(), 6u);
+  for (const char* to : {"rs274ngc", "fanuc"}) {
+    r = run("gcode " + q(dir / "plate_cc2.stp") + " --to " + to + " -o " + q(dir / (std::string(to) + ".nc")), dir);
+    ASSERT_EQ(r.exit_code, 0) << to << ": " << r.err;
+  }
+
+  std::ofstream(dir / "tools.tbl") << "T12 P12 Z0 D10 ;\nT20 P20 Z0 D10 ;\n";
+  std::ofstream(dir / "params.var").close();
+  fs::create_directories(dir / "home");
+  ncbridge::testing::RunOptions options;
+  options.working_directory = dir;
+  options.extra_environment = {"HOME=" + (dir / "home").string()};
+  const auto run274 = ncbridge::testing::run_program(
+      {rs274.string(), "-g", "-n", "2", "-t", (dir / "tools.tbl").string(), "-v", (dir / "params.var").string(), (dir / "rs274ngc.nc").string()},
+      options);
+  ASSERT_EQ(run274.exit_code, 0) << run274.err;
+  EXPECT_EQ(run274.err.find("rror"), std::string::npos) << run274.err;
+
+  // Every hole is fed into twice (spot, drill), the drill's point through the bottom (z 0) by at
+  // least its length (5 / tan 59 deg) and by no more than 2 mm beyond.
+  const double point = 5 / std::tan(59 * std::acos(-1.0) / 180);
+  for (const auto& f : report["features"]) {
+    const double x = f["center_xy"][0], y = f["center_xy"][1];
+    int feeds = 0;
+    double deepest = 1e9;
+    std::istringstream lines(run274.out);
+    for (std::string line; std::getline(lines, line);) {
+      const auto at = line.find("STRAIGHT_FEED(");
+      if (at == std::string::npos) continue;
+      double px = 0, py = 0, pz = 0;
+      if (std::sscanf(line.c_str() + at, "STRAIGHT_FEED(%lf, %lf, %lf", &px, &py, &pz) != 3) continue;
+      if (std::abs(px - x) > 1e-3 || std::abs(py - y) > 1e-3) continue;
+      ++feeds;
+      deepest = std::min(deepest, pz);
+    }
+    EXPECT_EQ(feeds, 2) << f["id"];
+    EXPECT_LE(deepest, -point + 1e-3) << f["id"];
+    EXPECT_GE(deepest, -point - 2.0) << f["id"];
+  }
 }

@@ -287,6 +287,34 @@ TEST(PlannerBadInput, AFeatureNoToolCanMakeIsAnErrorNamingIt) {
   }
 }
 
+TEST(PlannerBadInput, AnOutlineWithSharpInsideCornersAsksForAnyDiameterThatReaches) {
+  // An L-shaped part 100 mm tall: its inside corner is sharp, any end mill leaves it rounded; none
+  // of the shop's reaches 100 mm.
+  pr::Feature profile;
+  profile.kind = pr::FeatureKind::GeneralOutsideProfile;
+  profile.source = "test";
+  profile.placement.location = {0, 0, 100};
+  profile.depth = 100;
+  profile.outline = pr::Outline::General;
+  profile.boundary = {{0, 0}, {100, 0}, {100, 40}, {40, 40}, {40, 100}, {0, 100}};
+  pr::Part part = block_with({profile});
+  part.bounds = pr::Box{{0, 0, 0}, {100, 100, 100}};
+  try {
+    pp::plan(part, {{0, 0, 0}, {100, 100, 100}}, shop_tools());
+    FAIL() << "planned a 100 mm wall with 40 mm flutes";
+  } catch (const ncbridge::InputError& e) {
+    EXPECT_EQ(e.message(), "PROFILE1 (test): needs a flat end mill with flutes reaching 100 mm");
+  }
+  profile.depth = 30;
+  profile.placement.location.z = 30;
+  part = block_with({profile});
+  part.bounds = pr::Box{{0, 0, 0}, {100, 100, 30}};
+  const pp::Plan plan = pp::plan(part, {{0, 0, 0}, {100, 100, 30}}, shop_tools());
+  ASSERT_EQ(plan.warnings.size(), 1u);
+  EXPECT_NE(plan.warnings[0].message.find("sharp inside corners of the outline"), std::string::npos) << plan.warnings[0].message;
+  expect_valid_cc2(plan);
+}
+
 TEST(PlannerRamp, TheCounterboreFromBelow) {
   // The RAMP part held with its -z end up: the counterbore faces the spindle.
   const pp::Plan plan = plan_file(kShared / "corpus" / "ap224" / "ramp_ap224_995277945.stp", shop_tools(), pr::SetupUp::MinusZ);

@@ -99,6 +99,9 @@ std::vector<CartesianPoint> bspline_polyline(const BSplineCurve& curve, double t
   std::vector<CartesianPoint> out;
   constexpr int kSamplesPerSpan = 8;  // so that a span's turns are not missed between two chords
   constexpr int kMaxDepth = 24;
+  // A bound on the points of one curve, whatever a file holds (huge coordinates would otherwise
+  // halve every chord down to kMaxDepth): past it, chords are taken as they are.
+  constexpr std::size_t kMaxPoints = 200000;
   struct Piece {
     double u0, u1;
     CartesianPoint p0, p1;
@@ -117,7 +120,8 @@ std::vector<CartesianPoint> bspline_polyline(const BSplineCurve& curve, double t
         stack.pop_back();
         const double um = (piece.u0 + piece.u1) / 2;
         const CartesianPoint mid = evaluate(curve, u_knots, um);
-        if (piece.depth < kMaxDepth && distance_to_chord(mid, piece.p0, piece.p1) > tolerance) {
+        if (piece.depth < kMaxDepth && out.size() + stack.size() < kMaxPoints &&
+            distance_to_chord(mid, piece.p0, piece.p1) > tolerance) {
           stack.push_back({um, piece.u1, mid, piece.p1, piece.depth + 1});  // the second half after the first
           stack.push_back({piece.u0, um, piece.p0, mid, piece.depth + 1});
         } else {

@@ -89,11 +89,9 @@ void ControlFlowRunner::run(std::unique_ptr<TextSource> source, const std::strin
     if (!read_line(false)) {
       executor_.end_of_file();
       if (!frames_.empty()) fail(1, "File ended inside subroutine (missing endsub)");
-      if (options_.require_program_end || options_.strict) {
-        throw InputError({file_name(), line_, 1}, "File ended with no percent sign or program end");
-      }
+      if (options_.require_program_end || options_.strict) fail(1, "File ended with no percent sign or program end");
       if (options_.warning) {
-        options_.warning({file_name(), line_, 1}, "File ended with no percent sign or program end: the program ends "
+        options_.warning({file_name(), line_ == 0 ? 1 : line_, 1}, "File ended with no percent sign or program end: the program ends "
                                                   "here, as LinuxCNC ends it after running every block");
       }
       return;

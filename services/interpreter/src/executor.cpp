@@ -147,7 +147,9 @@ bool Executor::execute(const BlockCommand& b, const Source& source, const std::s
   check_block(b);
 
   // STEP 1: comment or message
-  if (!b.comment.empty() || b.comment_is_message || b.comment_action != BlockCommand::CommentAction::Comment) do_comment(b);
+  if (!b.comment.empty() || b.comment_is_message || b.comment_action != BlockCommand::CommentAction::Comment) {
+    do_comment(b);
+  }
   // STEP 2: spindle mode, feed mode, F, S, T
   if (b.g[kGSpindleMode] != -1) do_spindle_mode(b, b.g[kGSpindleMode]);
   if (b.g[kGFeedMode] != -1) do_feed_mode(b.g[kGFeedMode]);

@@ -4,6 +4,19 @@
 
 namespace ncbridge::part_reader::ap224 {
 
+double required_length(const Graph& g, InstanceId feature, InstanceId component, const Parameters& p, const char* name) {
+  auto it = p.lengths.find(name);
+  if (it == p.lengths.end()) {
+    g.fail(feature, std::string("its ") + g.at(component).records.front().entity + " " + where(component) + " gives no '" + name + "'");
+  }
+  return it->second;
+}
+
+double optional_length(const Parameters& p, const char* name) {
+  auto it = p.lengths.find(name);
+  return it == p.lengths.end() ? 0.0 : it->second;
+}
+
 std::string where(InstanceId id) {
   std::string text = "#";
   text += std::to_string(id);

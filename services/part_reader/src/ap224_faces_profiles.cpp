@@ -9,14 +9,6 @@ namespace ncbridge::part_reader::ap224 {
 
 namespace {
 
-double required(const Graph& g, InstanceId feature, InstanceId component, const Parameters& p, const char* name) {
-  auto it = p.lengths.find(name);
-  if (it == p.lengths.end()) {
-    g.fail(feature, std::string("its ") + g.at(component).records.front().entity + " " + where(component) + " gives no '" + name + "'");
-  }
-  return it->second;
-}
-
 std::optional<stepnc::Direction> named_direction(const Parameters& p, const char* name) {
   if (auto it = p.directions.find(name); it != p.directions.end()) return it->second;
   return std::nullopt;
@@ -51,8 +43,8 @@ ReadFeature read_flat_face(const Graph& g, InstanceId id, const std::optional<Pa
   if (!course || !boundary) g.fail(id, "the face needs a course of travel and a linear profile removal boundary");
   const Parameters cp = g.parameters(course->id);
   const Parameters bp = g.parameters(boundary->id);
-  const double length = required(g, id, course->id, cp, "distance");
-  const double width = required(g, id, boundary->id, bp, "profile length");
+  const double length = required_length(g, id, course->id, cp, "distance");
+  const double width = required_length(g, id, boundary->id, bp, "profile length");
   const stepnc::Direction up = named_direction(own, "removal direction").value_or(placement->axis);
   const stepnc::Direction along = normal_part(any_direction(cp).value_or(placement->ref_direction), up);
   stepnc::Direction across = cross(up, along);
@@ -82,8 +74,7 @@ ReadFeature read_flat_face(const Graph& g, InstanceId id, const std::optional<Pa
   return out;
 }
 
-ReadFeature read_outside_profile(const Graph& g, InstanceId id, const std::optional<PartStock>& stock) {
-  (void)stock;
+ReadFeature read_outside_profile(const Graph& g, InstanceId id) {
   ReadFeature out;
   const Parameters own = g.parameters(id);
   const auto placement = orientation(own);
@@ -100,7 +91,7 @@ ReadFeature read_outside_profile(const Graph& g, InstanceId id, const std::optio
   }
   const Parameters pp = g.parameters(profile->id);
   const Parameters wp = g.parameters(path->id);
-  const double depth = required(g, id, path->id, wp, "distance");
+  const double depth = required_length(g, id, path->id, wp, "distance");
   const auto q = orientation(pp) ? orientation(pp) : placement;
   if (!q) g.fail(id, "the profile has no placement");
   const stepnc::Direction up = named_direction(own, "removal direction").value_or(any_direction(wp) ? negate(*any_direction(wp)) : q->axis);
@@ -115,19 +106,19 @@ ReadFeature read_outside_profile(const Graph& g, InstanceId id, const std::optio
   const auto& pi = g.at(profile->id);
   if (Graph::is(pi, "RECTANGULAR_CLOSED_PROFILE")) {
     f.outline = Outline::Rectangle;
-    f.length = required(g, id, profile->id, pp, "length");
-    f.width = required(g, id, profile->id, pp, "width");
+    f.length = required_length(g, id, profile->id, pp, "length");
+    f.width = required_length(g, id, profile->id, pp, "width");
     if (auto r = pp.lengths.find("corner radius"); r != pp.lengths.end()) f.corner_radius = r->second;
   } else if (Graph::is(pi, "CIRCULAR_CLOSED_PROFILE")) {
     f.outline = Outline::Circle;
-    f.diameter = required(g, id, profile->id, pp, "diameter");
+    f.diameter = required_length(g, id, profile->id, pp, "diameter");
   } else {
     const auto sides = pp.counts.find("number of sides");
     if (sides == pp.counts.end() || sides->second < 3 || sides->second > 1000) g.fail(profile->id, "an ngon needs 3 or more 'number of sides'");
     const int n = static_cast<int>(std::lround(sides->second));
     double radius = 0;
     if (auto c = pp.lengths.find("circumscribed diameter"); c != pp.lengths.end()) radius = c->second / 2;
-    else radius = required(g, id, profile->id, pp, "diameter across flats") / 2 / std::cos(std::numbers::pi / n);
+    else radius = required_length(g, id, profile->id, pp, "diameter across flats") / 2 / std::cos(std::numbers::pi / n);
     f.outline = Outline::General;
     for (int k = 0; k < n; ++k) {
       const double a = 2 * std::numbers::pi * k / n;

@@ -23,7 +23,7 @@ ReadFeature read_pocket(const Graph& g, InstanceId id);
 ReadFeature read_slot(const Graph& g, InstanceId id);
 ReadFeature read_step(const Graph& g, InstanceId id, const std::optional<PartStock>& stock);
 ReadFeature read_flat_face(const Graph& g, InstanceId id, const std::optional<PartStock>& stock);
-ReadFeature read_outside_profile(const Graph& g, InstanceId id, const std::optional<PartStock>& stock);
+ReadFeature read_outside_profile(const Graph& g, InstanceId id);
 ListedFeature list_feature(const Graph& g, InstanceId id, const std::string& entity, const std::string& reason);
 // The holes of a composite hole, outermost (largest) first; `holes` maps ROUND_HOLE ids to their
 // index in the part's features.
@@ -32,6 +32,9 @@ std::optional<Compound> read_composite_hole(const Graph& g, InstanceId id, const
 std::optional<PartStock> read_stock(const Graph& g, std::vector<Warning>& warnings);
 
 // Shared helpers.
+// A length the component must give, else InputError at the feature; a length that may be absent (0).
+double required_length(const Graph& g, InstanceId feature, InstanceId component, const Parameters& p, const char* name);
+double optional_length(const Parameters& p, const char* name);
 std::string where(InstanceId id);  // "#12"
 const Component* find_component(const Graph& g, const std::vector<Component>& components,
                                 std::initializer_list<const char*> entities, const char* aspect = nullptr);

@@ -7,18 +7,6 @@
 
 namespace ncbridge::part_reader::ap224 {
 
-namespace {
-
-double length_of(const Graph& g, InstanceId component, const Parameters& p, const char* name, InstanceId feature) {
-  auto it = p.lengths.find(name);
-  if (it == p.lengths.end()) {
-    g.fail(feature, std::string("its ") + g.at(component).records.front().entity + " " + where(component) + " gives no '" + name + "'");
-  }
-  return it->second;
-}
-
-}  // namespace
-
 ReadFeature read_round_hole(const Graph& g, InstanceId id) {
   ReadFeature out;
   const Parameters own = g.parameters(id);
@@ -29,13 +17,13 @@ ReadFeature read_round_hole(const Graph& g, InstanceId id) {
   const Component* profile = find_component(g, components, {"CIRCULAR_CLOSED_PROFILE"}, "diameter occurrence");
   if (!profile) g.fail(id, "the hole has no circular_closed_profile (its diameter)");
   const Parameters profile_parameters = g.parameters(profile->id);
-  const double diameter = length_of(g, profile->id, profile_parameters, "diameter", id);
+  const double diameter = required_length(g, id, profile->id, profile_parameters, "diameter");
   if (!(diameter > 0)) g.fail(id, "the hole's diameter must be positive");
 
   const Component* path = find_component(g, components, {"PATH_FEATURE_COMPONENT"}, "hole depth occurrence");
   if (!path) g.fail(id, "the hole has no path_feature_component (its depth)");
   const Parameters path_parameters = g.parameters(path->id);
-  const double depth = length_of(g, path->id, path_parameters, "distance", id);
+  const double depth = required_length(g, id, path->id, path_parameters, "distance");
   if (!(depth > 0)) g.fail(id, "the hole's depth must be positive");
   // The path runs from the placement into the material.
   const stepnc::Direction into = any_direction(path_parameters).value_or(placement->axis);
@@ -62,10 +50,10 @@ ReadFeature read_round_hole(const Graph& g, InstanceId id) {
       f.bottom = HoleBottom::Flat;
     } else if (condition == "flat with radius") {
       f.bottom = HoleBottom::FlatWithRadius;
-      f.bottom_radius = length_of(g, bottom->id, b, "corner radius", id);
+      f.bottom_radius = required_length(g, id, bottom->id, b, "corner radius");
     } else if (condition == "spherical") {
       f.bottom = HoleBottom::Spherical;
-      f.bottom_radius = length_of(g, bottom->id, b, "radius", id);
+      f.bottom_radius = required_length(g, id, bottom->id, b, "radius");
     } else if (condition == "conical") {
       f.bottom = HoleBottom::Conical;
       auto angle = b.angles.find("tip angle");

@@ -8,23 +8,6 @@
 
 namespace ncbridge::part_reader::ap224 {
 
-namespace {
-
-double required(const Graph& g, InstanceId feature, InstanceId component, const Parameters& p, const char* name) {
-  auto it = p.lengths.find(name);
-  if (it == p.lengths.end()) {
-    g.fail(feature, std::string("its ") + g.at(component).records.front().entity + " " + where(component) + " gives no '" + name + "'");
-  }
-  return it->second;
-}
-
-double optional_length(const Parameters& p, const char* name) {
-  auto it = p.lengths.find(name);
-  return it == p.lengths.end() ? 0.0 : it->second;
-}
-
-}  // namespace
-
 ReadFeature read_pocket(const Graph& g, InstanceId id) {
   ReadFeature out;
   const std::string description = g.description_of(g.at(id));
@@ -36,7 +19,7 @@ ReadFeature read_pocket(const Graph& g, InstanceId id) {
   const Component* path = find_component(g, components, {"PATH_FEATURE_COMPONENT"}, "pocket depth occurrence");
   if (!path) g.fail(id, "the pocket has no path_feature_component (its depth)");
   const Parameters path_parameters = g.parameters(path->id);
-  const double depth = required(g, id, path->id, path_parameters, "distance");
+  const double depth = required_length(g, id, path->id, path_parameters, "distance");
   if (!(depth > 0)) g.fail(id, "the pocket's depth must be positive");
   const stepnc::Direction into = any_direction(path_parameters).value_or(placement->axis);
 
@@ -74,19 +57,19 @@ ReadFeature read_pocket(const Graph& g, InstanceId id) {
   const auto& pi = g.at(profile->id);
   if (Graph::is(pi, "RECTANGULAR_CLOSED_PROFILE")) {
     f.outline = Outline::Rectangle;
-    f.length = required(g, id, profile->id, pp, "length");
-    f.width = required(g, id, profile->id, pp, "width");
+    f.length = required_length(g, id, profile->id, pp, "length");
+    f.width = required_length(g, id, profile->id, pp, "width");
     f.corner_radius = optional_length(pp, "corner radius");
   } else if (Graph::is(pi, "CIRCULAR_CLOSED_PROFILE")) {
     f.outline = Outline::Circle;
-    f.diameter = required(g, id, profile->id, pp, "diameter");
+    f.diameter = required_length(g, id, profile->id, pp, "diameter");
   } else if (Graph::is(pi, "NGON_CLOSED_PROFILE")) {
     const auto sides = pp.counts.find("number of sides");
     if (sides == pp.counts.end() || sides->second < 3 || sides->second > 1000) g.fail(profile->id, "an ngon needs 3 or more 'number of sides'");
     const int n = static_cast<int>(std::lround(sides->second));
     double radius = 0;
     if (auto c = pp.lengths.find("circumscribed diameter"); c != pp.lengths.end()) radius = c->second / 2;
-    else radius = required(g, id, profile->id, pp, "diameter across flats") / 2 / std::cos(std::numbers::pi / n);
+    else radius = required_length(g, id, profile->id, pp, "diameter across flats") / 2 / std::cos(std::numbers::pi / n);
     f.outline = Outline::General;
     for (int k = 0; k < n; ++k) {
       const double a = 2 * std::numbers::pi * k / n;
@@ -95,8 +78,8 @@ ReadFeature read_pocket(const Graph& g, InstanceId id) {
     f.corner_radius = optional_length(pp, "corner radius");
   } else {  // SQUARE_U_PROFILE: an open pocket, open on the U's open side
     f.kind = FeatureKind::OpenPocket;
-    const double w = required(g, id, profile->id, pp, "width");
-    const double reach = required(g, id, profile->id, pp, "depth");
+    const double w = required_length(g, id, profile->id, pp, "width");
+    const double reach = required_length(g, id, profile->id, pp, "depth");
     f.outline = Outline::General;
     // The U's placement: origin at the middle of its closed side, x across it, y towards the
     // open side; the outline is centred on the pocket's placement.

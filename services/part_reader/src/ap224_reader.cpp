@@ -94,7 +94,7 @@ Part read_ap224(const step_writer::part21::Graph& graph, const std::string& file
     } else if (Graph::is(instance, "FLAT_FACE")) {
       take(g, read_flat_face(g, id, part.stock), part, nullptr, id);
     } else if (Graph::is(instance, "OUTSIDE_PROFILE")) {
-      take(g, read_outside_profile(g, id, part.stock), part, nullptr, id);
+      take(g, read_outside_profile(g, id), part, nullptr, id);
     } else {
       for (auto e : kTurning) {
         if (Graph::is(instance, e)) part.listed.push_back(list_feature(g, id, std::string(e), "turning feature: not planned for milling"));

@@ -14,19 +14,6 @@ namespace ncbridge::part_reader::ap224 {
 
 namespace {
 
-double required(const Graph& g, InstanceId feature, InstanceId component, const Parameters& p, const char* name) {
-  auto it = p.lengths.find(name);
-  if (it == p.lengths.end()) {
-    g.fail(feature, std::string("its ") + g.at(component).records.front().entity + " " + where(component) + " gives no '" + name + "'");
-  }
-  return it->second;
-}
-
-double optional_length(const Parameters& p, const char* name) {
-  auto it = p.lengths.find(name);
-  return it == p.lengths.end() ? 0.0 : it->second;
-}
-
 // How far from `from` along `direction` the stock's boundary lies (for steps that leave their
 // width and height to the stock).
 std::optional<double> to_stock_boundary(const PartStock& stock, const stepnc::CartesianPoint& from, const stepnc::Direction& direction) {
@@ -69,8 +56,8 @@ ReadFeature read_slot(const Graph& g, InstanceId id) {
   }
   const Parameters sp = g.parameters(swept->id);
   const Parameters cp = g.parameters(course->id);
-  const double width = required(g, id, swept->id, sp, "width");
-  const double length = required(g, id, course->id, cp, "distance");
+  const double width = required_length(g, id, swept->id, sp, "width");
+  const double length = required_length(g, id, course->id, cp, "distance");
   if (!(width > 0) || !(length >= 0)) g.fail(id, "the slot's width must be positive and its length not negative");
   const auto depth_it = sp.lengths.find("depth");
   if (depth_it == sp.lengths.end()) g.fail(id, "the slot's U profile " + where(swept->id) + " gives no 'depth'");
@@ -140,7 +127,7 @@ ReadFeature read_step(const Graph& g, InstanceId id, const std::optional<PartSto
   if (!course || !boundary) g.fail(id, "the step needs a course of travel and a vee profile removal boundary");
   const Parameters cp = g.parameters(course->id);
   const Parameters vp = g.parameters(boundary->id);
-  const double length = required(g, id, course->id, cp, "distance");
+  const double length = required_length(g, id, course->id, cp, "distance");
   const auto q = orientation(vp);
   if (!q) g.fail(boundary->id, "the step's vee profile has no placement");
   if (auto a = vp.angles.find("profile angle"); a != vp.angles.end() && std::abs(a->second - 90) > 1e-6) {

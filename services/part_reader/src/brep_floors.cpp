@@ -269,7 +269,7 @@ void recognize_floors(const Model& m, Recognized& out) {
     }
     if (!outer) continue;
     if (const int ceiling = ceiling_over(m, *outer, z); ceiling >= 0) {
-      out.warnings.push_back({faces_text(m, group), "a face up at z " + std::to_string(z) + " under " + faces_text(m, {ceiling}) +
+      out.warnings.push_back({faces_text(m, group), "a face up at z " + length_text(z) + " under " + faces_text(m, {ceiling}) +
                                                         ": the wall of a feature made from the side, not reached from above; not planned"});
       continue;
     }
@@ -287,22 +287,26 @@ void recognize_floors(const Model& m, Recognized& out) {
         top = std::max(top, m.faces[static_cast<std::size_t>(other)].box_max.z);
       }
     }
-    // Islands: inner loops that are not holes recognised already.
-    for (const auto& loop : loops) {
-      if (&loop == outer) continue;
-      bool island = false;
-      for (const auto& b : loop) {
-        const int other = other_face(m, b.edge->edge, b.face);
-        if (other >= 0 && !out.used[static_cast<std::size_t>(other)]) island = true;
-      }
-      if (island) {
-        out.warnings.push_back({faces_text(m, group), "an island (boss) stands on this floor: the feature is planned as if it were not there"});
-      }
-    }
     const std::string source = faces_text(m, faces);
     if (walls == 0) {
-      out.warnings.push_back({source, "a floor with no wall around it at z " + std::to_string(z) + ": not planned"});
+      out.warnings.push_back({source, "a floor with no wall around it at z " + length_text(z) + ": not planned"});
       continue;
+    }
+    // Islands: inner loops that are not holes recognised already, each named by its faces.
+    for (const auto& loop : loops) {
+      if (&loop == outer) continue;
+      std::vector<int> island;
+      for (const auto& b : loop) {
+        const int other = other_face(m, b.edge->edge, b.face);
+        if (other >= 0 && !out.used[static_cast<std::size_t>(other)] && std::find(island.begin(), island.end(), other) == island.end()) {
+          island.push_back(other);
+        }
+      }
+      if (!island.empty()) {
+        std::sort(island.begin(), island.end());
+        out.warnings.push_back({faces_text(m, group), "an island (boss, " + faces_text(m, island) +
+                                                          ") stands on this floor: the feature is planned as if it were not there"});
+      }
     }
     for (int f : faces) out.used[static_cast<std::size_t>(f)] = 1;
 

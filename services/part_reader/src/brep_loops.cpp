@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 
@@ -96,6 +97,12 @@ std::string faces_text(const Model& model, std::vector<int> faces) {
     text += std::to_string(model.faces[static_cast<std::size_t>(faces[i])].index);
   }
   return text;
+}
+
+std::string length_text(double mm) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", std::abs(mm) < 5e-7 ? 0.0 : mm);
+  return buf;
 }
 
 }  // namespace ncbridge::part_reader::brep

@@ -46,5 +46,7 @@ double area_about_z(const Chain& chain);
 std::vector<OutlineVertex> outline_of(const Chain& chain);
 // "faces 3, 12, 40" (1-based, as the model numbers them).
 std::string faces_text(const Model& model, std::vector<int> faces);
+// A length for a message: "19.76", "0" (mm, 6 significant digits).
+std::string length_text(double mm);
 
 }  // namespace ncbridge::part_reader::brep

@@ -176,7 +176,10 @@ std::vector<PlannedOperation> plan_outside_profile(const pr::Feature& f, const s
     tool = end_mill(c.tools, 2 * corner, f.depth);
   }
   if (!tool) {
-    cannot(c, f, id, "needs a flat end mill" + (corner < 1e8 ? " of at most " + mm(2 * corner) : std::string()) + " with flutes reaching " +
+    // Sharp inside corners take any diameter (left rounded to its radius); straight or convex
+    // outlines too.
+    const bool any_diameter = corner <= 1e-6 || corner >= 1e8;
+    cannot(c, f, id, "needs a flat end mill" + (any_diameter ? std::string() : " of at most " + mm(2 * corner)) + " with flutes reaching " +
                          mm(f.depth));
   }
   const double finish_axial = tool->flute_length <= 0 || tool->flute_length >= f.depth ? f.depth : axial_limit(*tool, 1.0);

@@ -83,7 +83,7 @@ TEST_P(RealWorld, ConvertsOrStopsWhereItsReasonSays) {
     EXPECT_TRUE(fs::exists(out)) << p.path;
   } else {
     EXPECT_NE(run.exit_code, 0) << p.path;
-    EXPECT_NE(run.err.find(p.path + ":" + p.stop + ": error: "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("ncbridge: error: " + program.string() + ":" + p.stop + ": "), std::string::npos) << run.err;
     EXPECT_NE(run.err.find(p.because), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out)) << "nothing half-written";
   }

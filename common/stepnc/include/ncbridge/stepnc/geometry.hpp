@@ -81,7 +81,8 @@ CartesianPoint bspline_point(const BSplineCurve& curve, double u);
 // knots counted with multiplicity as control points + degree + 1, multiplicities at most
 // degree + 1 and at least 1 inside, knots ascending, weights positive), or "" when it is one.
 std::string bspline_problem(const BSplineCurve& curve);
-// Points along the curve, ends included, whose chords stay within `tolerance` of it.
+// Points along the curve, ends included, whose chords stay within `tolerance` of it (at most
+// about 200000 points for one curve: beyond, chords are not refined further).
 std::vector<CartesianPoint> bspline_polyline(const BSplineCurve& curve, double tolerance);
 
 // A COMPOSITE_CURVE: segments joined end to start (lines as polylines, arcs as trimmed circles,
