@@ -14,6 +14,7 @@ packages=(
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   libpugixml-dev libcurl4-openssl-dev  # live capture: MTConnect agents' XML over HTTP
   libssl-dev  # SHA-256 of written files (services), openssl for the DDS Security test PKI
+  libjs-three  # three.js, inlined into convert --html's 3D view at build time
   # Open CASCADE: STEP B-rep part files (part_reader only)
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
   libtbb-dev  # the OCCT CMake targets link libtbb.so, which only the -dev package provides

@@ -2,7 +2,8 @@
 // the blocks topic as a controller executing it would: RUN_START (text: the program's name),
 // one BLOCK per block as it is executed (seq 1, 2, ...; `line` = its line in the program), then
 // RUN_END, all on the instance (controller id, run id). The interpreter service turns the run
-// into job "ID/RUN" when RUN_END arrives.
+// into job "ID/RUN" when RUN_END arrives; the command waits for that job's outcome (exit 1 when
+// the run failed, 4 when it did not end within --timeout) unless --no-wait.
 //
 // The program's control flow runs here, as on a controller (RS274/NGC, the default): loops and
 // branches are taken and subroutines called by our interpreter, and what is published is the
@@ -53,6 +54,7 @@ struct ControllerSimArguments {
   double rate = 0;  // blocks per second, 0 = as fast as the bus takes them
   std::optional<std::uint32_t> domain;
   std::string output;
+  bool no_wait = false;
   double timeout_s = 600;
 };
 
@@ -89,7 +91,7 @@ int run_controller_sim(const ControllerSimArguments& args) {
   if (args.domain) config.domain_id = *args.domain;
   bus::Participant participant(config);
   std::optional<service::JobWatch> watch;
-  if (!args.output.empty()) watch.emplace(participant, job_id);
+  if (!args.no_wait) watch.emplace(participant, job_id);
   bus::Writer writer(participant, bus::Topic::Blocks);
   if (!writer.wait_for_readers(1, std::chrono::seconds(10))) {
     throw ServiceUnavailable("no interpreter service on DDS domain " + std::to_string(participant.domain_id()) +
@@ -131,8 +133,10 @@ int run_controller_sim(const ControllerSimArguments& args) {
     throw ServiceUnavailable("run " + job_id + " not converted after " + std::to_string(static_cast<long long>(args.timeout_s)) +
                              " s (--timeout)");
   }
-  output->write(outcome.file->content);
-  outputs.commit();
+  if (output != nullptr) {
+    output->write(outcome.file->content);
+    outputs.commit();
+  }
   std::fprintf(stderr, "%zu blocks executed; run end to %s file: %.1f ms\n", blocks.size(),
                outcome.file->level == wire::Part21Level::Cc2 ? "CC2" : "CC1",
                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - run_end).count());
@@ -152,8 +156,10 @@ void add_controller_sim_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain"}));
   cmd->add_option("--rate", args->rate, "Blocks per second (default: as fast as possible)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));
-  cmd->add_option("-o,--output", args->output, "Wait for the run's Part 21 file and write it here (- for standard output)");
-  cmd->add_option("--timeout", args->timeout_s, "Seconds to wait for the file (default 600)");
+  CLI::Option* output =
+      cmd->add_option("-o,--output", args->output, "Write the run's Part 21 file here (- for standard output)");
+  cmd->add_flag("--no-wait", args->no_wait, "Publish the run and exit, without waiting for its conversion")->excludes(output);
+  cmd->add_option("--timeout", args->timeout_s, "Seconds to wait for the run's conversion (default 600)");
   cmd->callback([args, &exit_code]() { exit_code = run_controller_sim(*args); });
 }
 

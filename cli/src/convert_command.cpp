@@ -28,6 +28,7 @@
 #include "html_report.hpp"
 #include "input_files.hpp"
 #include "output_files.hpp"
+#include "tool_source.hpp"
 #include "setup_checks.hpp"
 #include "warning.hpp"
 #include "ncbridge/cc1_builder/cc1_builder.hpp"
@@ -49,7 +50,7 @@ using Clock = std::chrono::steady_clock;
 
 struct ConvertArguments {
   std::string program;
-  std::string tools;
+  ToolSource tools;
   std::string stock;
   std::string dialect = "rs274ngc";
   std::string heidenhain_feed_units = "mm/min";
@@ -261,7 +262,7 @@ std::string part21_file_name(const ConvertRun& run) {
 
 cc1_builder::Options builder_options(const ConvertArguments& args, const std::optional<setup::Stock>& stock) {
   cc1_builder::Options options;
-  options.tools = setup::read_tool_list(args.tools);
+  options.tools = args.tools.read();
   options.stock = *stock;
   options.security_plane_z = args.security_plane;
   return options;
@@ -311,7 +312,7 @@ void interpret(const Input& program, const interpreter::Options& interp, TimedSi
 }
 
 std::string setup_detail(const cc1_builder::Options& options, const ConvertArguments& args) {
-  std::string text = "read " + std::to_string(options.tools.tools().size()) + " tools from " + args.tools;
+  std::string text = "read " + std::to_string(options.tools.tools().size()) + " tools from " + args.tools.file();
   if (options.stock) {
     const auto& s = *options.stock;
     char box[160];
@@ -355,7 +356,7 @@ SetupCheckInputs check_inputs(const ConvertArguments& args, const Input& program
   in.stock = stock;
   in.stock_file = args.stock;
   in.tools = tools;
-  in.tools_file = args.tools;
+  in.tools_file = args.tools.file();
   in.security_plane = args.security_plane;
   in.heidenhain_per_minute = (args.dialect == "heidenhain" || args.dialect == "auto") && args.heidenhain_feed_units == "mm/min";
   return in;
@@ -450,12 +451,12 @@ ConvertRun open_run(const ConvertArguments& args, Verbosity verbosity) {
     throw UsageError("--html needs --level cc2 (it draws the recognised features)");
   }
   if (args.security_plane && !std::isfinite(*args.security_plane)) throw UsageError("--security-plane must be a number");
-  if (!args.tools.empty()) require_input_file(args.tools, "--tools");
+  args.tools.check();
   if (!args.stock.empty()) require_input_file(args.stock, "--stock");
   run.stp = &run.outputs.add(args.output, "-o");
   if (!args.report.empty()) run.report = &run.outputs.add(args.report, "--report");
   if (!args.html.empty()) run.html = &run.outputs.add(args.html, "--html");
-  for (const std::string* input : {&args.program, &args.tools, &args.stock}) run.outputs.protect(*input);
+  for (const std::string* input : {&args.program, &args.tools.file(), &args.stock}) run.outputs.protect(*input);
   run.program = open_input(args.program, "program");
   run.progress = std::make_unique<Progress>(run.feedback.progress_wanted());
   return run;
@@ -466,8 +467,8 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
   ConvertRun run = open_run(args, verbosity);
   const TimeLimit limit(args, t0);
   const bool part21_input = is_part21_file(run.program);
-  if (!part21_input && (args.tools.empty() || args.stock.empty())) {
-    throw UsageError("converting a program needs --tools and --stock");
+  if (!part21_input && (!args.tools.given() || args.stock.empty())) {
+    throw UsageError("converting a program needs --tools (or --tool-table) and --stock");
   }
   if (!part21_input && args.level == "cc1") return run_streamed_cc1(args, run, t0);
   std::vector<Warning> warnings;
@@ -585,7 +586,7 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ConvertArguments>();
   CLI::App* cmd = app.add_subcommand("convert", "Convert a part program into an ISO 14649 (STEP-NC) Part 21 file");
   cmd->add_option("program", args->program, "Part program, a CC1 Part 21 file to raise to --level cc2, or a CC2 file to give toolpaths (--level cc1); - reads standard input")->required();
-  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md); needed for a program");
+  add_tool_source_options(*cmd, args->tools, "; needed for a program");
   cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML, docs/formats/stock.md); needed for a program");
   cmd->add_option("--dialect", args->dialect, "Program dialect")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));

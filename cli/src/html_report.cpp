@@ -7,6 +7,11 @@
 
 namespace ncbridge::cli {
 
+// Inlined at build time (cli/embed_text.cmake): Debian's three.js with its orbit controls, and
+// cli/src/html_viewer.js.
+std::string_view three_js();
+std::string_view html_viewer_js();
+
 namespace fr = feature_recognizer;
 namespace sn = stepnc;
 
@@ -73,7 +78,8 @@ std::vector<sn::CartesianPoint> points_of(const sn::CompositeCurve& curve) {
     for (int k = 0; k <= steps; ++k) {
       const double t = (arc.trim_1_parameter + (arc.sense_agreement ? 1 : -1) * sweep * k / steps) * kPi / 180;
       out.push_back({p.location.x + arc.radius * (std::cos(t) * r.x + std::sin(t) * y.x),
-                     p.location.y + arc.radius * (std::cos(t) * r.y + std::sin(t) * y.y), 0});
+                     p.location.y + arc.radius * (std::cos(t) * r.y + std::sin(t) * y.y),
+                     p.location.z + arc.radius * (std::cos(t) * r.z + std::sin(t) * y.z)});
     }
   }
   return out;
@@ -127,6 +133,41 @@ std::string feature_outline(const fr::RecognizedFeature& f, const View& v) {
   if (p.shape == fr::ProfileShape::Rectangular || (p.outline.empty() && p.length > 0)) return rect(p.length, p.width, p.corner_radius);
   if (!p.outline.empty()) return polygon(p.outline);
   return "";
+}
+
+const char* feature_colour(fr::FeatureType t);
+
+// A feature for the 3D view (JSON): its outline in XY ("c": circle, "r": rectangle, "p":
+// polygon) from its top to its bottom.
+std::string feature_json(const fr::RecognizedFeature& f, const std::string& id) {
+  const auto& p = f.profile;
+  std::string shape;
+  if (f.type == fr::FeatureType::RoundHole) {
+    shape = "\"k\":\"c\",\"d\":" + num(f.diameter);
+  } else if (f.type == fr::FeatureType::Slot && f.slot_course.size() >= 2) {
+    const auto& s0 = f.slot_course.front();
+    const auto& s1 = f.slot_course.back();
+    const double length = std::hypot(s1.x - s0.x, s1.y - s0.y) + (f.slot_ends[0] == fr::SlotEnd::Radiused ? f.slot_width : 0);
+    shape = "\"k\":\"r\",\"cx\":" + num((s0.x + s1.x) / 2) + ",\"cy\":" + num((s0.y + s1.y) / 2) + ",\"l\":" + num(length) +
+            ",\"w\":" + num(f.slot_width) + ",\"a\":" + num(std::atan2(s1.y - s0.y, s1.x - s0.x) * 180 / kPi);
+  } else if (p.shape == fr::ProfileShape::Circular) {
+    shape = "\"k\":\"c\",\"d\":" + num(p.diameter);
+  } else if (p.shape == fr::ProfileShape::Rectangular || (p.outline.empty() && p.length > 0)) {
+    shape = "\"k\":\"r\",\"l\":" + num(p.length) + ",\"w\":" + num(p.width) + ",\"a\":" + num(p.angle_deg);
+  } else if (!p.outline.empty()) {
+    shape = "\"k\":\"p\",\"ring\":[";
+    for (std::size_t i = 0; i < p.outline.size(); ++i) shape += (i ? "," : "") + num(p.outline[i].x) + "," + num(p.outline[i].y);
+    shape += "]";
+  } else {
+    return "";
+  }
+  std::string json_id;
+  for (char c : id) {
+    if (c == '"' || c == '\\') json_id += '\\';
+    if (c == '<') json_id += "\\u003c"; else json_id += c;
+  }
+  return "{\"id\":\"" + json_id + "\",\"x\":" + num(f.x) + ",\"y\":" + num(f.y) + ",\"t\":" + num(f.top_z) + ",\"b\":" +
+         num(f.bottom_z) + ",\"col\":\"" + feature_colour(f.type) + "\"," + shape + "}";
 }
 
 const char* feature_colour(fr::FeatureType t) {
@@ -189,8 +230,9 @@ std::string html_report(const HtmlReportInput& in) {
         paths.push_back({points_of(t.basiccurve), rapid, legend.size()});
       }
     } else if (const auto* hole = std::get_if<sn::RoundHole>(&project.feature(ws.its_feature))) {
-      const auto& l = hole->feature_placement.location;  // a drilling cycle: a dot at the hole
-      paths.push_back({{l, l}, false, legend.size()});
+      // A drilling cycle: the drill's axis from the hole's top to its depth (a dot from above).
+      const auto& l = hole->feature_placement.location;
+      paths.push_back({{l, {l.x, l.y, l.z + hole->depth.position.location.z}}, false, legend.size()});
     }
     legend.push_back(ws.its_id + " — " + std::string(sn::entity_name(project.operation(ws.its_operation))) + " — " +
                      project.tool(op.its_tool).its_id);
@@ -211,7 +253,7 @@ std::string html_report(const HtmlReportInput& in) {
   const double thin = total_points > kMaxPoints ? std::sqrt(static_cast<double>(total_points) / kMaxPoints) * 0.5 / v.scale : 0;
 
   std::string svg;
-  svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + num(width_px, 0) + " " + num(height_px, 0) +
+  svg += "<svg id=\"top\" xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + num(width_px, 0) + " " + num(height_px, 0) +
          "\" width=\"" + num(width_px, 0) + "\" height=\"" + num(height_px, 0) + "\">\n";
   svg += "<rect x=\"" + num(v.sx(stock.min[0]), 2) + "\" y=\"" + num(v.sy(stock.max[1]), 2) + "\" width=\"" +
          num(stock.size(0) * v.scale, 2) + "\" height=\"" + num(stock.size(1) * v.scale, 2) +
@@ -234,7 +276,7 @@ std::string html_report(const HtmlReportInput& in) {
     } else {
       svg += "<polyline class=\"ws" + std::to_string(p.workingstep) + "\" points=\"" + pts + "\" stroke=\"" +
              kPalette[p.workingstep % std::size(kPalette)] + "\" stroke-width=\"1\" stroke-opacity=\"0.75\"/>\n";
-      if (p.points.size() == 2 && p.points[0] == p.points[1]) {
+      if (p.points.size() == 2 && p.points[0].x == p.points[1].x && p.points[0].y == p.points[1].y) {
         svg += "<circle cx=\"" + num(v.sx(p.points[0].x), 2) + "\" cy=\"" + num(v.sy(p.points[0].y), 2) + "\" r=\"2.5\" fill=\"" +
                kPalette[p.workingstep % std::size(kPalette)] + "\"/>\n";
       }
@@ -245,7 +287,7 @@ std::string html_report(const HtmlReportInput& in) {
     const auto& f = cc2.features[i];
     const std::string outline = feature_outline(f, v);
     if (outline.empty()) continue;
-    svg += "<g stroke=\"" + std::string(feature_colour(f.type)) + "\"><title>" + escape(cc2.feature_ids[i]) + "</title>" + outline + "</g>\n";
+    svg += "<g id=\"f" + std::to_string(i) + "\" stroke=\"" + std::string(feature_colour(f.type)) + "\"><title>" + escape(cc2.feature_ids[i]) + "</title>" + outline + "</g>\n";
   }
   svg += "</g>\n";
   // Labels at the features' centres, moved down a line while they would cover an earlier one.
@@ -288,15 +330,16 @@ std::string html_report(const HtmlReportInput& in) {
       if (op.strategy != fr::Strategy::None && op.strategy != fr::Strategy::Plunge) ops += " (" + escape(std::string(fr::to_string(op.strategy))) + ")";
       ops += "<br>";
     }
-    panel += "<tr><td><span class=\"sw\" style=\"border-color:" + std::string(feature_colour(f.type)) + "\"></span>" +
+    panel += "<tr data-f=\"" + std::to_string(i) + "\"><td><span class=\"sw\" style=\"border-color:" + std::string(feature_colour(f.type)) + "\"></span>" +
              escape(cc2.feature_ids[i]) + "</td><td>" + escape(std::string(fr::to_string(f.type))) + "</td><td>" + num(f.x, 2) + ", " +
              num(f.y, 2) + "</td><td>" + num(f.top_z, 2) + " / " + num(f.bottom_z, 2) + "</td><td>" + dims_text(f) + "</td><td>" + ops +
              "</td></tr>\n";
   }
   panel += "</table>\n<h2>Workingsteps (" + std::to_string(legend.size()) + ")</h2>\n<ul class=\"legend\">\n";
   for (std::size_t i = 0; i < legend.size(); ++i) {
-    panel += "<li><span class=\"sw\" style=\"background:" + std::string(kPalette[i % std::size(kPalette)]) + "\"></span>" +
-             escape(legend[i]) + "</li>\n";
+    panel += "<li data-ws=\"" + std::to_string(i) + "\"><label><input type=\"checkbox\" checked data-ws=\"" + std::to_string(i) +
+             "\"> <span class=\"sw\" style=\"background:" + std::string(kPalette[i % std::size(kPalette)]) + "\"></span>" +
+             escape(legend[i]) + "</label></li>\n";
   }
   panel += "</ul>\n<h2>Tools</h2>\n<table><tr><th>id</th><th>&#8960; mm</th></tr>\n";
   for (const auto& t : project.tools) {
@@ -309,6 +352,52 @@ std::string html_report(const HtmlReportInput& in) {
   panel += "</ul>\n";
   if (thin > 0) panel += "<p class=\"note\">Toolpaths thinned for display (" + std::to_string(total_points) + " points).</p>\n";
 
+  // The 3D view's data: toolpaths (x,y,z triples, thinned like the drawing), features, stock.
+  double zmin = stock.min[2], zmax = stock.max[2];
+  std::string data = "{\"stock\":{\"min\":[" + num(stock.min[0]) + "," + num(stock.min[1]) + "," + num(stock.min[2]) + "],\"max\":[" +
+                     num(stock.max[0]) + "," + num(stock.max[1]) + "," + num(stock.max[2]) + "]},\"colours\":[";
+  for (std::size_t i = 0; i < std::size(kPalette); ++i) data += std::string(i ? "," : "") + "\"" + kPalette[i] + "\"";
+  data += "],\"paths\":[";
+  bool first_path = true;
+  for (const auto& p : paths) {
+    if (p.points.empty()) continue;
+    std::string pts;
+    double lx = 1e300, ly = 1e300;
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      const auto& q = p.points[i];
+      if (thin > 0 && i + 1 < p.points.size() && std::hypot(q.x - lx, q.y - ly) < thin) continue;
+      pts += (pts.empty() ? "" : ",") + num(q.x) + "," + num(q.y) + "," + num(q.z);
+      lx = q.x, ly = q.y;
+      zmin = std::min(zmin, q.z), zmax = std::max(zmax, q.z);
+    }
+    data += std::string(first_path ? "" : ",") + "{\"w\":" + std::to_string(p.workingstep) + ",\"r\":" + (p.rapid ? "1" : "0") +
+            ",\"p\":[" + pts + "]}";
+    first_path = false;
+  }
+  data += "],\"features\":[";
+  bool first_feature = true;
+  for (std::size_t i = 0; i < cc2.features.size(); ++i) {
+    const std::string f = feature_json(cc2.features[i], cc2.feature_ids[i]);
+    if (f.empty()) continue;
+    data += std::string(first_feature ? "" : ",") + f.substr(0, f.size() - 1) + ",\"i\":" + std::to_string(i) + "}";
+    first_feature = false;
+  }
+  data += "]}";
+  const std::string view3d =
+      "<h2>3D view <span class=\"note\">drag: turn &#183; right drag or shift drag: pan &#183; wheel: zoom &#183; mm, "
+      "axes at the program zero: X red, Y green, Z blue &#183; grid 10 mm</span></h2>\n"
+      "<div class=\"controls\"><button data-view=\"iso\">iso</button> <button data-view=\"top\">top</button> "
+      "<button data-view=\"front\">front</button> <button data-view=\"side\">side</button> "
+      "<label><input type=\"checkbox\" id=\"show-rapids\" checked> rapid moves</label> "
+      "<label><input type=\"checkbox\" id=\"show-features\" checked> features</label> &#183; "
+      "<label>lowest Z shown <input type=\"range\" id=\"zcut\" min=\"" + num(zmin - 0.001) + "\" max=\"" + num(zmax) +
+      "\" step=\"any\" value=\"" + num(zmin - 0.001) + "\"> <output id=\"zcut-value\">all</output></label></div>\n"
+      "<div id=\"view3d\"></div><p id=\"view3d-status\" class=\"note\"></p>\n"
+      "<script type=\"application/json\" id=\"ncb-data\">" + data + "</script>\n";
+  // At the end of the body: the views are sized once the side panel is laid out.
+  const std::string scripts =
+      "<script>\n" + std::string(three_js()) + "\n</script>\n<script>\n" + std::string(html_viewer_js()) + "\n</script>\n";
+
   std::string html;
   html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>ncbridge CC2: " + escape(in.title) +
           "</title>\n<style>\n"
@@ -320,11 +409,14 @@ std::string html_report(const HtmlReportInput& in) {
           "text-align:left;vertical-align:top;overflow-wrap:anywhere}\n"
           "ul{padding-left:18px;margin:4px 0}.legend{list-style:none;padding:0}\n"
           ".sw{display:inline-block;width:12px;height:12px;margin-right:6px;vertical-align:middle;border:2px solid transparent;box-sizing:border-box}\n"
-          "svg{max-width:100%;height:auto}svg .label{font:bold 12px system-ui,sans-serif;text-anchor:middle;dominant-baseline:middle;"
+          "#view3d{width:100%;height:520px;border:1px solid #ccc;background:#fff}.controls{margin:4px 0}.controls button{font:inherit}\n"
+          "tr[data-f]{cursor:pointer}tr.hl{background:#fff3b0}svg g.hl{stroke-width:5}svg polyline.dim{stroke-opacity:0.08}\n"
+          "#top{cursor:grab}svg{max-width:100%;height:auto}svg .label{font:bold 12px system-ui,sans-serif;text-anchor:middle;dominant-baseline:middle;"
           "paint-order:stroke;stroke:#fff;stroke-width:3px}svg .axis{font:12px system-ui,sans-serif;fill:#666}\n"
           ".note{color:#666}.setup{border:2px solid #c0392b;background:#fdecea;padding:4px 10px;margin-bottom:8px}\n"
           ".setup h2{color:#c0392b;margin-top:4px}\n</style>\n</head>\n<body>\n<main>\n<h1>" +
-          escape(in.title) + " &#8212; top view</h1>\n" + svg + "</main>\n<aside>\n" + panel + "</aside>\n</body>\n</html>\n";
+          escape(in.title) + " &#8212; top view <span class=\"note\">wheel: zoom &#183; drag: pan &#183; double click: whole view</span></h1>\n" +
+          svg + view3d + "</main>\n<aside>\n" + panel + "</aside>\n" + scripts + "</body>\n</html>\n";
   return html;
 }
 

@@ -1,8 +1,10 @@
 #pragma once
-// `ncbridge convert --html OUT.html`: one self-contained page (inline SVG and CSS, no external
-// resources) with a top view of the stock, the toolpaths coloured by workingstep, the
-// recognised features outlined and labelled, and a side panel listing features, operations,
-// tools and warnings.
+// `ncbridge convert --html OUT.html`: one self-contained page (inline SVG, CSS and scripts, no
+// external resources: it opens offline) with a top view of the stock (zoom and pan), the
+// toolpaths coloured by workingstep, the recognised features outlined and labelled, a 3D view
+// of stock, toolpaths and features (three.js, inlined at build time; views, lowest-Z cut), and a
+// side panel listing features (a row highlights its outline), workingsteps (toggles, highlight
+// on hover), tools and warnings. The scripts: cli/src/html_viewer.js.
 #include <string>
 #include <vector>
 

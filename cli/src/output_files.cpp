@@ -257,6 +257,9 @@ void OutputFile::sync() {
   struct stat old {};
   if (::stat(target_.c_str(), &old) == 0 && S_ISREG(old.st_mode)) {
     mode = old.st_mode & 07777;  // a replaced file keeps its permissions
+    if (::geteuid() == 0) {      // and, written by root, its owner (others cannot give files away)
+      if (::fchown(fd_, old.st_uid, old.st_gid) != 0) fail("cannot keep the owner: " + error_text(errno));
+    }
   } else {
     const mode_t mask = ::umask(0);
     ::umask(mask);

@@ -10,7 +10,8 @@
 //
 // What an output path means:
 //   "-", /dev/stdout, /dev/fd/N    standard output (file descriptor N); one output each at most
-//   a regular file, or nothing yet the file is replaced atomically (its permissions are kept)
+//   a regular file, or nothing yet the file is replaced atomically (its permissions are kept, and
+//                                  its owner when root writes it; hard links to it are not)
 //   a symbolic link                followed: the file it leads to is replaced, the link stays
 //   /dev/null                      written nowhere
 //   another character device, FIFO written through (opened and written, never replaced)

@@ -28,6 +28,7 @@
 #include "errors.hpp"
 #include "input_files.hpp"
 #include "output_files.hpp"
+#include "tool_source.hpp"
 #include "ncbridge/bus/participant.hpp"
 #include "ncbridge/bus/writer.hpp"
 #include "ncbridge/common/error.hpp"
@@ -44,7 +45,7 @@ namespace fs = std::filesystem;
 struct SubmitArguments {
   std::vector<std::string> programs;
   std::string list;
-  std::string tools;
+  ToolSource tools;
   std::string stock;
   std::string dialect = "rs274ngc";
   std::string level = "cc1";
@@ -60,7 +61,7 @@ struct SubmitArguments {
 // One program to submit, with the tool list and stock it is converted with.
 struct Submission {
   std::string program;
-  std::string tools;
+  ToolSource tools;
   std::string stock;
 };
 
@@ -120,16 +121,16 @@ std::vector<Submission> submissions(const SubmitArguments& args) {
       if (w.empty() || w[0].starts_with("#")) continue;
       if (w.size() != 1 && w.size() != 3)
         throw InputError({args.list, number, 1}, "expected PROGRAM or PROGRAM TOOLS STOCK");
-      out.push_back({resolve(w[0]), w.size() == 3 ? resolve(w[1]) : args.tools, w.size() == 3 ? resolve(w[2]) : args.stock});
+      out.push_back({resolve(w[0]), w.size() == 3 ? ToolSource{resolve(w[1])} : args.tools, w.size() == 3 ? resolve(w[2]) : args.stock});
     }
   }
   std::size_t from_stdin = 0;
   for (const Submission& s : out) {
-    if (s.tools.empty() || s.stock.empty())
-      throw UsageError(s.program + ": no tool list or stock for this program (--tools, --stock, or the list's columns)");
+    if (!s.tools.given() || s.stock.empty())
+      throw UsageError(s.program + ": no tool list or stock for this program (--tools or --tool-table, --stock, or the list's columns)");
     if (s.program == "-") ++from_stdin;
     else require_input_file(s.program, "program");
-    require_input_file(s.tools, "--tools");
+    s.tools.check();
     require_input_file(s.stock, "--stock");
   }
   if (from_stdin > 1) throw UsageError("standard input (-) can be one program only");
@@ -195,7 +196,7 @@ int run_submit(const SubmitArguments& args) {
     job.file_name = s.program == "-" ? "<stdin>" : s.program;
     job.program_text = read_text(s.program, "program");
     job.dialect = dialect_of(args.dialect);
-    job.tools = setup::read_tool_list(s.tools).tools();
+    job.tools = s.tools.read().tools();
     job.stock = setup::read_stock(s.stock);
     job.level = args.level == "cc2" ? wire::ConformanceClass::Cc2 : wire::ConformanceClass::Cc1;
     job.output_name = stem_of(s.program) + ".stp";
@@ -208,7 +209,7 @@ int run_submit(const SubmitArguments& args) {
       } else {
         out.file = &out.set.add((output_dir / job.output_name).string(), "--output-dir");
       }
-      for (const std::string* input : {&s.program, &s.tools, &s.stock}) out.set.protect(*input);
+      for (const std::string* input : {&s.program, &s.tools.file(), &s.stock}) out.set.protect(*input);
     }
     if (!output_names.insert(job.output_name).second)
       throw UsageError(s.program + ": two programs would both be written as " + job.output_name);
@@ -287,7 +288,7 @@ void add_submit_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("submit", "Submit part programs to the running DDS services");
   cmd->add_option("programs", args->programs, "Part programs, or folders of them; - reads one from standard input");
   cmd->add_option("--list", args->list, "File of \"PROGRAM [TOOLS STOCK]\" lines to submit too");
-  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML)");
+  add_tool_source_options(*cmd, args->tools, "");
   cmd->add_option("--stock", args->stock, "Stock block (JSON or YAML)");
   cmd->add_option("--dialect", args->dialect, "Program dialect")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));

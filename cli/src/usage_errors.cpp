@@ -37,17 +37,32 @@ std::string joined(const std::vector<std::string>& names) {
   return text;
 }
 
-// The subcommand argv names (its first word that is not an option), or nullptr.
-const CLI::App* named_command(const CLI::App& app, int argc, const char* const* argv) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view word = argv[i];
-    if (word.starts_with("-")) continue;
-    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
-      if (sub->check_name(std::string(word))) return sub;
-    }
-    return nullptr;
+const CLI::App* subcommand_named(const CLI::App& app, const std::string& word) {
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    if (sub->check_name(word)) return sub;
   }
   return nullptr;
+}
+
+// The commands argv names, outermost first ("capture", then "linuxcnc"): each word that is not
+// an option and names a subcommand of the one before; empty when the first such word names none.
+std::vector<const CLI::App*> command_chain(const CLI::App& app, int argc, const char* const* argv) {
+  std::vector<const CLI::App*> chain;
+  const CLI::App* current = &app;
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word.starts_with("-")) continue;
+    const CLI::App* sub = subcommand_named(*current, word);
+    if (sub == nullptr) break;
+    chain.push_back(sub);
+    current = sub;
+  }
+  return chain;
+}
+
+const CLI::App* named_command(const CLI::App& app, int argc, const char* const* argv) {
+  const auto chain = command_chain(app, argc, argv);
+  return chain.empty() ? nullptr : chain.front();
 }
 
 std::vector<std::string> option_names(const CLI::App& command) {
@@ -75,11 +90,13 @@ bool is_number(std::string_view word) {
   return ec == std::errc() && end == word.data() + word.size();
 }
 
-// "unknown option --outptu (did you mean --output?)" for each option word argv's command does
-// not have (CLI11 would first complain about a required option the typo was meant to be).
-std::string unknown_options(const CLI::App& app, const CLI::App* command, int argc, const char* const* argv) {
+// "unknown option --outptu (did you mean --output?)" for each option word that neither the
+// program nor the commands argv names have (CLI11 would first complain about a required option
+// the typo was meant to be).
+std::string unknown_options(const CLI::App& app, const std::vector<const CLI::App*>& chain, int argc,
+                            const char* const* argv) {
   std::vector<std::string> known = option_names(app);
-  if (command) {
+  for (const CLI::App* command : chain) {
     const std::vector<std::string> own = option_names(*command);
     known.insert(known.end(), own.begin(), own.end());
   }
@@ -135,11 +152,13 @@ std::optional<std::string> command_error(const CLI::App& app, int argc, const ch
 }
 
 std::string parse_error_message(const CLI::App& app, const CLI::ParseError& e, int argc, const char* const* argv) {
-  const CLI::App* command = named_command(app, argc, argv);
-  const std::string name = command ? command->get_name() : std::string();
+  const auto chain = command_chain(app, argc, argv);
+  const CLI::App* command = chain.empty() ? nullptr : chain.back();
+  std::string name;
+  for (const CLI::App* c : chain) name += (name.empty() ? "" : " ") + c->get_name();
   const std::string prefix = name.empty() ? "" : name + ": ";
   const std::string help = name.empty() ? "ncbridge --help" : "ncbridge " + name + " --help";
-  std::string message = unknown_options(app, command, argc, argv);
+  std::string message = unknown_options(app, chain, argc, argv);
   if (!message.empty()) return prefix + message + " (see " + help + ")";
   message = e.what();
   if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <fstream>
 #include <map>
@@ -11,6 +12,8 @@
 #include <utility>
 
 #include "ncbridge/common/error.hpp"
+#include "ncbridge/setup/freecad_tools.hpp"
+#include "ncbridge/setup/fusion_tools.hpp"
 #include "ncbridge/setup/yaml_input.hpp"
 
 namespace ncbridge::setup {
@@ -79,9 +82,27 @@ const Tool* ToolList::find(int number) const {
 }
 
 ToolList parse_tool_list(std::string_view text, const std::string& file) {
+  if (text.starts_with("PK\x03\x04")) {
+    throw InputError({file, 1, 1}, "a zip archive (a Fusion 360 .tools file?): export the library as JSON, or unzip it");
+  }
   YAML::Node root = parse_yaml_document(text, file);
-  YAML::Node list = root;
-  if (root.IsMap() && root["tools"]) list = root["tools"];
+  if (root.IsMap() && !root["tools"]) {
+    if (root["data"] && root["data"].IsSequence()) return parse_fusion_tool_library(text, file);
+    if (root["shape"] && root["parameter"]) return ToolList({parse_freecad_tool_bit(text, file, 1)});
+  }
+  // (A YAML::Node assigned to takes the new value into the node it refers to: `list` is made
+  // once, never assigned.)
+  const YAML::Node list = root.IsMap() && root["tools"] ? root["tools"] : root;
+  double to_mm = 1;  // the list's "units" (lengths; feeds per minute)
+  if (root.IsMap() && root["tools"]) {
+    if (const auto units = optional_string(root, "units", file)) {
+      if (*units == "inch" || *units == "in" || *units == "inches") {
+        to_mm = 25.4;
+      } else if (*units != "mm" && *units != "millimeters") {
+        throw InputError(location_of(root["units"], file), "units must be mm or inch, not '" + *units + "'");
+      }
+    }
+  }
   if (!list.IsSequence()) {
     throw InputError(location_of(root, file), "a tool list is a list of tools (or {\"tools\": [...]})");
   }
@@ -116,9 +137,12 @@ ToolList parse_tool_list(std::string_view text, const std::string& file) {
     t.feed = optional_number(node, "feed", file).value_or(0);
     t.plunge_feed = optional_number(node, "plunge", file).value_or(optional_number(node, "plunge_feed", file).value_or(0));
     for (const char* key : {"diameter", "length", "corner_radius", "flute_length", "rpm", "spindle_rpm", "feed", "plunge", "plunge_feed"}) {
-      if (node[key] && node[key].as<double>() < 0) {
+      if (optional_number(node, key, file).value_or(0) < 0) {  // (a key without a value is null, not a number)
         throw InputError(location_of(node[key], file), std::string(key) + " must not be negative");
       }
+    }
+    for (double* length : {&t.diameter, &t.length, &t.corner_radius, &t.flute_length, &t.thread_pitch, &t.feed, &t.plunge_feed}) {
+      *length *= to_mm;
     }
     tools.push_back(std::move(t));
   }
@@ -127,6 +151,14 @@ ToolList parse_tool_list(std::string_view text, const std::string& file) {
 }
 
 ToolList read_tool_list(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".fctl") return read_freecad_tool_library(file);
+  if (extension == ".fctb") return read_freecad_tool_bit(file);
+  if (extension == ".tbl") {
+    throw InputError({file.string(), 0, 0}, "a LinuxCNC tool table: give it with --tool-table (and --tool-table-units)");
+  }
   return parse_tool_list(read_text_file(file), file.string());
 }
 

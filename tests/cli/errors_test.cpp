@@ -74,6 +74,10 @@ TEST(CommandLine, UnknownOptionsNameTheNearestOne) {
          "convert: unknown option --outptu (did you mean --output?)"});
   check({{"canon", (kPlate / "plate.ngc").string(), "--tool", "t.json"}, 2, "canon: unknown option --tool (did you mean --tools?)"});
   check({{"diff", "a.stp", "b.stp", "--tolerence", "1"}, 2, "diff: unknown option --tolerence (did you mean --tolerance?)"});
+  // In a command of a command, the message names both and knows the inner one's options.
+#ifdef NCBRIDGE_HAVE_SERVICES
+  check({{"capture", "linuxcnc", "--bogus"}, 2, "capture linuxcnc: unknown option --bogus (see ncbridge capture linuxcnc --help)"});
+#endif
   // A negative number is a value, not an option.
   const ProgramRun negative = ncbridge({"convert", (kPlate / "plate.ngc").string(), "--tools", (kPlate / "tools.json").string(),
                                         "--stock", (kPlate / "stock.json").string(), "--security-plane", "-5", "-o", "/dev/null"});
@@ -84,7 +88,7 @@ TEST(CommandLine, MissingOrBadValuesAreUsageErrors) {
   const std::string program = (kPlate / "plate.ngc").string();
   check({{"convert", program}, 2, "convert: --output is required (see ncbridge convert --help)"});
   check({{"convert", program, "-o", "x.stp", "--level", "cc3"}, 2, "convert: --level: cc3 not in {cc1,cc2}"});
-  check({{"convert", program, "-o", "x.stp"}, 2, "converting a program needs --tools and --stock"});
+  check({{"convert", program, "-o", "x.stp"}, 2, "converting a program needs --tools (or --tool-table) and --stock"});
   check({{"convert", program, "--tools", (kPlate / "tools.json").string(), "--stock", (kPlate / "stock.json").string(), "-o",
           "x.stp", "--html", "x.html"},
          2, "--html needs --level cc2"});

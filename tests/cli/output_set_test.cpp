@@ -110,15 +110,25 @@ TEST(OutputSet, ASymbolicLinkIsFollowedAndStays) {
   EXPECT_EQ(slurp(dir / "missing.stp"), "created");
 }
 
-TEST(OutputSet, AReplacedFileKeepsItsPermissions) {
+TEST(OutputSet, AReplacedFileKeepsItsPermissionsAndOwner) {
   const fs::path dir = fresh_directory("permissions");
   put(dir / "a.stp", "old");
   fs::permissions(dir / "a.stp", fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  // Root replacing someone else's file leaves it theirs.
+  const bool root = ::geteuid() == 0;
+  if (root) {
+    ASSERT_EQ(::chown((dir / "a.stp").c_str(), 4321, 4321), 0);
+  }
   OutputSet outputs;
   outputs.add((dir / "a.stp").string(), "-o").write("new");
   outputs.commit();
+  EXPECT_EQ(slurp(dir / "a.stp"), "new");
   EXPECT_EQ(fs::status(dir / "a.stp").permissions() & fs::perms::all,
             fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  struct stat st {};
+  ASSERT_EQ(::stat((dir / "a.stp").c_str(), &st), 0);
+  EXPECT_EQ(st.st_uid, root ? 4321u : ::geteuid());
+  EXPECT_EQ(st.st_gid, root ? 4321u : st.st_gid);
 }
 
 TEST(OutputSet, DevNullIsWrittenNowhereAndStaysACharacterDevice) {

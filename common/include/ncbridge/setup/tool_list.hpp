@@ -55,10 +55,12 @@ class ToolList {
   std::vector<Tool> tools_;  // sorted by number, unique numbers
 };
 
-// The project's tool list: a JSON array (or {"tools": [...]}) or the same in YAML; chosen by
-// extension (.json / .yaml / .yml), else by content. Unknown fields are ignored. Errors
-// (missing number, wrong type, unknown tool type, duplicate number) throw InputError with
-// file and line.
+// The project's tool list: a JSON array (or {"tools": [...], "units": "mm"|"inch"}) or the same
+// in YAML. Unknown fields are ignored. Errors (missing number, wrong type, unknown tool type,
+// duplicate number) throw InputError with file and line. Other tools' data is read too:
+// read_tool_list takes a FreeCAD tool library (.fctl) or bit (.fctb); both take a Fusion 360
+// tool library's JSON export and a FreeCAD bit by their content (freecad_tools.hpp,
+// fusion_tools.hpp).
 ToolList read_tool_list(const std::filesystem::path& file);
 ToolList parse_tool_list(std::string_view text, const std::string& file_name_for_errors);
 

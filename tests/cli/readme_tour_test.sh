@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# The README's tour, run exactly as written: every command of its shell blocks (section "A tour"),
+# from a copy of the repository root (links to the checkout's files, `build` to this build) after
+# the example that scripts/run-example.sh makes (its commands after the build step). Every
+# command must succeed, the files the tour names must appear, and the checkout must not gain a
+# file. The services run on a DDS domain of their own (NCBRIDGE_DDS_DOMAIN), so tests running
+# beside this one are not disturbed.
+# Usage: readme_tour_test.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+BUILD=$(cd "$1" && pwd)
+SRC=$(cd "$2" && pwd)
+WORK=$(mktemp -d "${TMPDIR:-/tmp}/ncbridge-tour.XXXXXX")
+cleanup() {
+  # An `up` the tour left behind (a command failed before `kill $!`) is stopped with its services.
+  if [[ -f "$WORK/up.pid" ]]; then kill "$(cat "$WORK/up.pid")" 2>/dev/null || true; fi
+  rm -rf "$WORK"
+}
+trap cleanup EXIT
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+
+ROOT="$WORK/repo"
+mkdir "$ROOT"
+shopt -s dotglob nullglob
+for entry in "$SRC"/*; do
+  name=$(basename "$entry")
+  case "$name" in build | build-* | out | .git) continue ;; esac
+  ln -s "$entry" "$ROOT/$name"
+done
+ln -s "$BUILD" "$ROOT/build"
+touch "$WORK/started"
+
+# The script: run-example.sh's commands after its build, then the tour's shell blocks as they are.
+{
+  echo 'set -euo pipefail'
+  echo 'trap '\''for j in $(jobs -p); do kill $j 2>/dev/null; done'\'' EXIT'
+  sed -n '/^scripts\/build.sh/,$p' "$SRC/scripts/run-example.sh" | tail -n +2
+  awk '/^## /{tour = ($0 == "## A tour")} tour && /^```/{inside = !inside && ($0 == "```sh"); next} tour && inside' "$SRC/README.md"
+} > "$WORK/tour.sh"
+commands=$(grep -c '^build/bin/ncbridge' "$WORK/tour.sh" || true)
+[[ "$commands" -ge 20 ]] || fail "only $commands ncbridge commands found in README.md's tour: $(cat "$WORK/tour.sh")"
+grep -q '^build/bin/ncbridge up ' "$WORK/tour.sh" || fail "the tour has no ncbridge up"
+
+export NCBRIDGE_DDS_DOMAIN=$((120 + $$ % 100))
+unset CYCLONEDDS_URI
+# `up &`'s pid is recorded so a failed tour does not leave the services running.
+sed -i 's|^\(build/bin/ncbridge up .*\)&$|\1\& echo $! > ../up.pid|' "$WORK/tour.sh"
+status=0
+(cd "$ROOT" && bash -x "$WORK/tour.sh") > "$WORK/tour.log" 2>&1 || status=$?
+if [[ $status -ne 0 ]]; then
+  cat "$WORK/tour.log" >&2
+  fail "the README's tour stops (status $status) at the last command above"
+fi
+
+# What the tour says it makes.
+for f in out/plate_cc1.stp out/plate_cc2.stp out/plate.html plate.stp plate.json plate.html plate_cc2.stp part.stp \
+  plate.nc plate.tap plate.mpf plate.h plate.ngc bracket_cc2.stp bracket.json bracket.html block_cc2.stp \
+  out/plate.stp out/plate_tnc.stp; do
+  [[ -s "$ROOT/$f" && ! -L "$ROOT/$f" ]] || fail "the tour did not make $f"
+done
+grep -q "FILE_SCHEMA" "$ROOT/out/plate_tnc.stp" || fail "out/plate_tnc.stp is not a Part 21 file"
+grep -q "identical" "$WORK/tour.log" || fail "diff of the tour's two CC2 files did not say identical"
+# `kill $!` stops up, which stops its services (SIGTERM, a grace period, then SIGKILL).
+[[ -f "$WORK/up.pid" ]] || fail "the tour did not start ncbridge up"
+for _ in $(seq 150); do
+  kill -0 "$(cat "$WORK/up.pid")" 2>/dev/null || break
+  sleep 0.1
+done
+! kill -0 "$(cat "$WORK/up.pid")" 2>/dev/null || fail "ncbridge up still runs 15 s after the tour's kill"
+
+# Nothing written into the checkout.
+written=$(find "$SRC" \( -path "$SRC/build" -o -path "$SRC/build-*" -o -path "$SRC/.git" \) -prune \
+  -o -newer "$WORK/started" -type f -print)
+[[ -z "$written" ]] || fail "the tour wrote into the checkout: $written"
+echo "PASS: README tour, $commands commands ($(grep -c '^+ build/bin/ncbridge' "$WORK/tour.log") run)"
