@@ -3,6 +3,7 @@
 // Every output of a run is made first and then written together: a failed run leaves none.
 #include <CLI/CLI.hpp>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -12,12 +13,16 @@
 #include <string>
 #include <vector>
 
+#include "cc2_to_cc1.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "html_report.hpp"
 #include "input_files.hpp"
 #include "output_files.hpp"
 #include "ncbridge/common/error.hpp"
+#include "ncbridge/gcode_writer/dialect.hpp"
+#include "ncbridge/gcode_writer/program_writer.hpp"
+#include "ncbridge/gcode_writer/stepnc_interpreter.hpp"
 #include "ncbridge/part_reader/brep_reader.hpp"
 #include "ncbridge/part_reader/setup_frame.hpp"
 #include "ncbridge/process_planner/planner.hpp"
@@ -47,6 +52,8 @@ struct PlanArguments {
   std::vector<double> part_offset;
   std::string material = "steel";
   double security_clearance = 10;
+  std::string gcode;            // also the program: the plan's toolpaths generated and written
+  std::string to = "rs274ngc";  // in this dialect
 };
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
@@ -91,6 +98,7 @@ int run_plan(const PlanArguments& args) {
   OutputFile& stp = outputs.add(args.output, "-o");
   OutputFile* report_file = args.report.empty() ? nullptr : &outputs.add(args.report, "--report");
   OutputFile* html_file = args.html.empty() ? nullptr : &outputs.add(args.html, "--html");
+  OutputFile* gcode_file = args.gcode.empty() ? nullptr : &outputs.add(args.gcode, "--gcode");
   for (const std::string* input : {&args.part, &args.tools, &args.stock, &args.stock_step}) {
     if (!input->empty()) outputs.protect(*input);
   }
@@ -207,7 +215,25 @@ int run_plan(const PlanArguments& args) {
     html_text = html_report(page);
   }
 
+  // The program: the plan's toolpaths generated (as `convert --level cc1` does) and written
+  // (as `gcode` does); any refusal leaves every output unwritten.
+  std::string program_text;
+  if (gcode_file) {
+    std::vector<std::string> notes;
+    const stepnc::Project cc1 = generate_cc1(plan.project, *stock, args.part, notes);
+    for (const auto& n : notes) print_warning({args.part, 0, 0}, n);
+    gcode_writer::Options options;
+    options.dialect = *gcode_writer::parse_dialect(args.to);
+    options.tools = gcode_writer::stepnc_tools(cc1);
+    std::string name = std::filesystem::path(gcode_file->file_name()).stem().string();
+    for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : '_';
+    if (!name.empty()) options.program_name = name;
+    gcode_writer::ProgramWriter writer(options, [&](std::string_view piece) { program_text += piece; });
+    gcode_writer::interpret_stepnc(cc1, args.part, gcode_writer::StepncOptions{}, writer);
+  }
+
   stp.write(cc2_text);
+  if (gcode_file) gcode_file->write(program_text);
   if (report_file) report_file->write(report_text);
   if (html_file) html_file->write(html_text);
   outputs.commit();
@@ -224,6 +250,9 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--stock", args->stock, "Stock block (docs/formats/stock.md); its part_bbox_min places the part");
   cmd->add_option("--stock-step", args->stock_step, "Stock as a STEP solid (its bounding box)");
   cmd->add_option("-o,--output", args->output, "CC2 Part 21 file to write")->required();
+  cmd->add_option("--gcode", args->gcode, "Also write the program: the plan's toolpaths generated, in the dialect --to");
+  cmd->add_option("--to", args->to, "Dialect of --gcode (default rs274ngc)")
+      ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain"}));
   cmd->add_option("--report", args->report, "Also write a JSON report (docs/plan.md)");
   cmd->add_option("--html", args->html, "Also write an HTML page of the planned features");
   cmd->add_option("--setup", args->setup, "The part's side facing the spindle: +z (default), -z, +x, -x, +y, -y");

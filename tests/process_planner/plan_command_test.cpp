@@ -225,3 +225,54 @@ TEST(PlanCommand, DrilledHolesGoOnToAProgramRs274Runs) {
     EXPECT_GE(deepest, -point - 2.0) << f["id"];
   }
 }
+
+TEST(PlanCommand, GcodeWritesTheProgramOfThePlanInOneRun) {
+  const fs::path rs274 = ncbridge::testing::find_on_path("rs274");
+  if (rs274.empty()) {
+    if (ncbridge::testing::in_ci()) FAIL() << "rs274 not installed under CI=true (scripts/install-deps.sh --tests installs linuxcnc-uspace)";
+    GTEST_SKIP() << "SKIPPED: rs274 not installed (Debian package linuxcnc-uspace)";
+  }
+  const fs::path dir = work_dir();
+  const fs::path part = kSource / "examples" / "part";
+  const std::string inputs = q(part / "bracket.step") + " --stock " + q(part / "stock.json") + " --tools " + q(part / "tools.json");
+  auto r = run("plan " + inputs + " -o " + q(dir / "bracket_cc2.stp") + " --gcode " + q(dir / "bracket.ngc"), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run("plan " + inputs + " -o " + q(dir / "bracket_fanuc_cc2.stp") + " --gcode " + q(dir / "bracket.nc") + " --to fanuc", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(read_file(dir / "bracket.nc").find("O"), std::string::npos);
+  // The same program as planning first and posting the CC2 file with `gcode`.
+  r = run("gcode " + q(dir / "bracket_cc2.stp") + " --to rs274ngc -o " + q(dir / "bracket_posted.ngc"), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string program = read_file(dir / "bracket.ngc");
+  const auto body = [](const std::string& text) { return text.substr(text.find('\n', text.find('\n') + 1)); };  // past % and the name
+  EXPECT_EQ(body(program), body(read_file(dir / "bracket_posted.ngc")));
+  // A tool change names its tool (two workingsteps with one tool make no second M6).
+  std::istringstream lines(program);
+  int changes = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.find("M6") == std::string::npos) continue;
+    ++changes;
+    EXPECT_NE(line.find('T'), std::string::npos) << line;
+  }
+  EXPECT_GT(changes, 1);
+  // LinuxCNC's interpreter runs it.
+  std::ofstream table(dir / "tools.tbl");
+  for (int t = 1; t <= 20; ++t) table << "T" << t << " P" << t << " Z0 D6 ;\n";
+  table.close();
+  std::ofstream(dir / "params.var").close();
+  fs::create_directories(dir / "home");
+  ncbridge::testing::RunOptions options;
+  options.working_directory = dir;
+  options.extra_environment = {"HOME=" + (dir / "home").string()};
+  const auto run274 = ncbridge::testing::run_program(
+      {rs274.string(), "-g", "-n", "2", "-t", (dir / "tools.tbl").string(), "-v", (dir / "params.var").string(), (dir / "bracket.ngc").string()},
+      options);
+  ASSERT_EQ(run274.exit_code, 0) << run274.err;
+  EXPECT_EQ(run274.err.find("rror"), std::string::npos) << run274.err;
+  EXPECT_NE(run274.out.find("STRAIGHT_FEED"), std::string::npos);
+  // A refused dialect name is a usage error and nothing is written.
+  r = run("plan " + inputs + " -o " + q(dir / "none.stp") + " --gcode " + q(dir / "none.nc") + " --to haas", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "none.stp"));
+  EXPECT_FALSE(fs::exists(dir / "none.nc"));
+}

@@ -233,13 +233,18 @@ class Generator {
     out_.cc1.main_workplan.its_elements.push_back(std::move(r));
   }
 
-  // Through the security plane from where the tool is to `start`: the retract a rapid movement
-  // of its own, so that a tool change (which the program makes between two rapid movements,
-  // docs/gcode.md) comes at the security plane.
+  // Through the security plane from where the tool is to `start`. When the next workingstep
+  // changes the tool, the retract is a rapid movement of its own, so that the tool change
+  // (which a program makes between two rapid movements, docs/gcode.md) comes at the security
+  // plane; with the same tool it is one rapid movement (two would read as a tool change).
   void move_to(const mc::Point3& start) {
-    if (at_) {
+    const bool tool_changes = !tool_ || *tool_ != next_tool_;
+    tool_ = next_tool_;
+    if (at_ && tool_changes) {
       add_rapid({*at_, {at_->x, at_->y, security_z_}});
       add_rapid({{at_->x, at_->y, security_z_}, {start.x, start.y, security_z_}, start});
+    } else if (at_) {
+      add_rapid({*at_, {at_->x, at_->y, security_z_}, {start.x, start.y, security_z_}, start});
     } else {
       add_rapid({{start.x, start.y, security_z_}, start});
     }
@@ -274,6 +279,7 @@ class Generator {
     const auto& feature = cc2_.feature(ws.its_feature);
     const auto& op = cc2_.operation(ws.its_operation);
     const auto& mop = sn::machining_operation(op);
+    next_tool_ = mop.its_tool.index;
     auto fail = [&](const std::string& what) { throw InputError({o_.source_name, 0, 0}, "workingstep '" + ws.its_id + "': " + what); };
     if (std::holds_alternative<sn::ToolpathFeature>(feature) || std::holds_alternative<sn::FreeformOperation>(op)) {
       // Already CC1: its toolpath is what it is.
@@ -407,6 +413,8 @@ class Generator {
   PartModel* part_ = nullptr;
   double safe_z_ = 0, security_z_ = 0;
   std::optional<mc::Point3> at_;
+  std::optional<std::uint32_t> tool_;  // the tool of the last workingstep moved to
+  std::uint32_t next_tool_ = 0;        // the tool of the workingstep being generated
   int rapids_ = 0;
   std::map<std::uint32_t, sn::TechnologyRef> entry_tech_;
 };
