@@ -6,6 +6,7 @@
 
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,11 @@
 #include <string>
 
 #include "cam_truth.hpp"
+#include "ncbridge/material_check/material_check.hpp"
+#include "ncbridge/material_check/toolpath_program.hpp"
+#include "ncbridge/setup/stock.hpp"
+#include "ncbridge/step_writer/stepnc_file.hpp"
+#include "ncbridge/toolpath_generator/toolpath_generator.hpp"
 
 namespace fs = std::filesystem;
 
@@ -59,6 +65,47 @@ TEST_P(CamPart, PlanFindsTheTruthsFeaturesInTheStep) {
   EXPECT_DOUBLE_EQ(score.f1(), 1.0);
   EXPECT_EQ(run("check '" + (dir / "cc2.stp").string() + "'", dir / "check.txt"), 0) << read_file(dir / "check.txt");
   EXPECT_NE(read_file(dir / "check.txt").find(", 0 errors, 0 warnings"), std::string::npos) << read_file(dir / "check.txt");
+}
+
+// The plan goes on to a program that makes the part: its CC2 file's toolpaths generated
+// (services/toolpath_generator) and simulated on the stock (common/material_check): nothing
+// cut below the design, no rapid through material, no plunge, every feature cut to its design.
+TEST_P(CamPart, ThePlannedProgramMakesThePart) {
+  namespace mc = ncbridge::material_check;
+  const fs::path part = kShared / "corpus" / "cam" / GetParam();
+  const fs::path dir = fs::temp_directory_path() / ("ncbridge_plan_cam_made_" + GetParam());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const int code = run("plan '" + (part / "part.step").string() + "' --stock '" + (part / "stock.json").string() + "' --tools '" +
+                           (part / "tools.json").string() + "' -o '" + (dir / "cc2.stp").string() + "'",
+                       dir / "err.txt");
+  ASSERT_EQ(code, 0) << read_file(dir / "err.txt");
+  const auto cc2 = ncbridge::step_writer::read_stepnc_file(dir / "cc2.stp").project;
+  const auto stock = ncbridge::setup::read_stock((part / "stock.json").string());
+  ncbridge::toolpath_generator::Options options;
+  options.stock = stock;
+  options.source_name = GetParam();
+  const auto generated = ncbridge::toolpath_generator::generate_toolpaths(cc2, options);
+  mc::CheckOptions check;
+  check.cell = 0.2;
+  const auto report = mc::check_material(mc::program_from_stepnc(generated.cc1), mc::designed_part(cc2, stock, GetParam()), check);
+  std::printf("%-22s planned program: least reached %.4f, gouge %.4f mm, rapids through material %zu, plunges %zu, removed %.0f mm3\n",
+              GetParam().c_str(), report.least_reached(), report.max_gouge, report.rapid_collisions, report.plunges,
+              report.removed_volume);
+  EXPECT_LE(report.max_gouge, 0.01) << "at " << report.max_gouge_at.x << " " << report.max_gouge_at.y << " " << report.max_gouge_at.z;
+  EXPECT_EQ(report.rapid_collisions, 0u);
+  EXPECT_EQ(report.plunges, 0u);
+  const std::string warnings = read_file(dir / "err.txt");
+  for (const auto& f : report.features) {
+    // A flat-bottomed hole the tool list has no end mill to flatten: the plan says so, and the
+    // drill's point is what is left (118 degrees: half its diameter / tan 59 deg).
+    if (warnings.find(f.id + ": flat bottom: no flat end mill") != std::string::npos) {
+      const double d = std::stod(f.id.substr(f.id.find("D=") + 2));
+      EXPECT_LE(f.max_leftover, d / 2 / std::tan(59 * std::acos(-1.0) / 180) + 0.01) << f.id;
+      continue;
+    }
+    EXPECT_GE(f.reached_fraction, 0.999) << f.id << ": leftover " << f.max_leftover << " mm";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, CamPart,
