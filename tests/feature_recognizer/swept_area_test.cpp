@@ -30,6 +30,15 @@ TEST(SweptArea, StraightLineIsAStadium) {
   EXPECT_FALSE(area.contains({20, 5.1}));
 }
 
+TEST(SweptArea, RepeatedPointsAreTheSameSweep) {
+  // A move of no length between two others (a program's G1 to where the tool already is, as a
+  // Heidenhain program's repeated L block makes): no direction of its own, the same area.
+  const auto plain = fr::swept_area({{{0, 0}, {10, 0}, {10, 5}}}, 2, kTol);
+  const auto repeated = fr::swept_area({{{0, 0}, {0, 0}, {10, 0}, {10, 0}, {10, 5}, {10, 5}}}, 2, kTol);
+  EXPECT_DOUBLE_EQ(repeated.area(), plain.area());
+  EXPECT_NEAR(fr::swept_area({{{3, 4}, {3, 4}}}, 2, kTol).area(), fr::swept_area({{{3, 4}}}, 2, kTol).area(), 1e-9);
+}
+
 TEST(SweptArea, SinglePointIsADisk) {
   const auto area = fr::swept_area({{{3, 4}}}, 2, kTol);
   EXPECT_NEAR(area.area(), pi * 4, area_bound(2 * pi * 2));

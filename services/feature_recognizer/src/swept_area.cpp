@@ -120,7 +120,9 @@ std::vector<Point2> polygonal_disk(double radius, double tolerance) {
 std::size_t extreme_vertex(const std::vector<Point2>& disk, double nx, double ny) {
   const auto n = static_cast<long>(disk.size());
   const double step = 2 * std::numbers::pi / static_cast<double>(n);
-  const long guess = std::lround(std::atan2(ny, nx) / step);
+  const double angle = std::atan2(ny, nx);
+  if (!std::isfinite(angle)) return 0;
+  const long guess = std::lround(angle / step);
   long best = 0;
   double best_dot = -1e300;
   for (long k = guess - 1; k <= guess + 1; ++k) {
@@ -139,7 +141,13 @@ std::size_t extreme_vertex(const std::vector<Point2>& disk, double nx, double ny
 // overlaps itself, but it winds around every point of the union of the segments' stadiums at
 // least once and around no other point (docs/recognition.md, "Geometry"), so the union is the
 // points of non-zero winding, with none of the crossings inside it made by stadiums.
-Ring sweep_outline(const std::vector<Point2>& pts, const std::vector<Point2>& disk) {
+Ring sweep_outline(const std::vector<Point2>& path, const std::vector<Point2>& disk) {
+  // A segment of no length has no direction: its repeated point is dropped.
+  std::vector<Point2> pts;
+  pts.reserve(path.size());
+  for (const Point2& p : path) {
+    if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 0) pts.push_back(p);
+  }
   const std::size_t n = disk.size(), half = n / 2;
   Ring out;
   auto at = [&](Point2 p, std::size_t k) { out.push_back({p.x + disk[k].x, p.y + disk[k].y}); };
