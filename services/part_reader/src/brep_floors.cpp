@@ -292,7 +292,10 @@ void recognize_floors(const Model& m, Recognized& out) {
       out.warnings.push_back({source, "a floor with no wall around it at z " + length_text(z) + ": not planned"});
       continue;
     }
-    // Islands: inner loops that are not holes recognised already, each named by its faces.
+    // Islands: inner loops that are not holes recognised already, each named by its faces. The
+    // model has no boss (ISO 14649 its_boss) yet: a feature cut without its island would mill
+    // the island away, so it is not planned.
+    bool has_island = false;
     for (const auto& loop : loops) {
       if (&loop == outer) continue;
       std::vector<int> island;
@@ -305,10 +308,13 @@ void recognize_floors(const Model& m, Recognized& out) {
       if (!island.empty()) {
         std::sort(island.begin(), island.end());
         out.warnings.push_back({faces_text(m, group), "an island (boss, " + faces_text(m, island) +
-                                                          ") stands on this floor: the feature is planned as if it were not there"});
+                                                          ") stands on this floor: not planned (cut without the island, "
+                                                          "the island would be milled away)"});
+        has_island = true;
       }
     }
     for (int f : faces) out.used[static_cast<std::size_t>(f)] = 1;
+    if (has_island) continue;
 
     Feature f;
     f.source = source;
