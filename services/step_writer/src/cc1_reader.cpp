@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <map>
 #include <optional>
+#include <stdexcept>
 
 #include "ncbridge/step_writer/part21_reader.hpp"
 #include "ncbridge/step_writer/stepnc_file.hpp"
@@ -395,8 +396,12 @@ class Cc1Reader {
     t.dimension.edge_radius = opt_number(dim, 4);
     t.dimension.edge_center_vertical = opt_number(dim, 5);
     t.dimension.edge_center_horizontal = opt_number(dim, 6);
-    if (!attr(body, 1).is_unset()) t.number_of_teeth = attr(body, 1).as_integer();
+    if (!attr(body, 1).is_unset()) {
+      if (!attr(body, 1).is_integer()) fail(body, "number_of_teeth must be an integer");
+      t.number_of_teeth = attr(body, 1).as_integer();
+    }
     if (!attr(body, 2).is_unset()) {
+      if (!attr(body, 2).is_enumeration()) fail(body, "hand_of_cut must be .LEFT., .RIGHT. or .NEUTRAL.");
       const std::string& h = attr(body, 2).as_enumeration();
       t.hand_of_cut = h == "LEFT" ? sn::Hand::Left : h == "RIGHT" ? sn::Hand::Right : sn::Hand::Neutral;
     }
@@ -629,6 +634,7 @@ class Cc1Reader {
     if (tol.entity() == "PLUS_MINUS_VALUE") {
       t.upper_limit = number(tol, 0);
       t.lower_limit = number(tol, 1);
+      if (!attr(tol, 2).is_integer()) fail(tol, "significant_digits must be an integer");
       t.significant_digits = static_cast<int>(attr(tol, 2).as_integer());
     } else {
       warn(tol, "tolerance kind not kept (read as +/-0)");
@@ -844,7 +850,13 @@ class Cc1Reader {
 }  // namespace
 
 StepncReadResult stepnc_from_graph(const part21::Graph& graph, const std::string& file_name) {
-  return Cc1Reader(graph, file_name).read();
+  try {
+    return Cc1Reader(graph, file_name).read();
+  } catch (const std::logic_error& e) {
+    // A value of the wrong kind where the reader did not check it first (part21::Value's
+    // accessors): an input error of the file, never a crash.
+    throw InputError({file_name, 1, 1}, std::string("an attribute of the wrong kind: ") + e.what());
+  }
 }
 
 StepncReadResult read_stepnc(std::string_view text, const std::string& file_name) {
