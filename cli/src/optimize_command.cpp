@@ -58,7 +58,7 @@ std::string lower(std::string s) {
 
 // Without --tools: tools 0..99 of length and diameter 0. Positions are program-frame, so tool
 // lengths do not move the path; the program's G43 H.. and T.. M6 read.
-setup::ToolList placeholder_tools() {
+setup::ToolList tools_without_dimensions() {
   std::vector<setup::Tool> tools;
   for (int n = 0; n <= 99; ++n) {
     setup::Tool t;
@@ -96,7 +96,7 @@ void read_kinds(const OptimizeArguments& args, toolpath_optimizer::OptimizeReque
       feedback.info("dialect " + std::string(interpreter::dialect_name(detected.dialect)) + " (detected: " + detected.reason + ")");
     }
     request.cnc.require_program_end = false;  // the last block ends it, as on the control
-    request.cnc.tools = args.tools.empty() ? placeholder_tools() : setup::read_tool_list(args.tools);
+    request.cnc.tools = args.tools.empty() ? tools_without_dimensions() : setup::read_tool_list(args.tools);
     if (args.heidenhain_feed_units == "mm/s") request.cnc.heidenhain_feed_units = interpreter::Options::FeedUnits::PerSecond;
     std::stringstream dirs(args.subroutine_path);
     for (std::string d; std::getline(dirs, d, ':');) {
