@@ -64,6 +64,21 @@ nlohmann::json without_timings(nlohmann::json report) {
   return report;
 }
 
+// LinuxCNC's standalone interpreter on `program` in `dir`, with the tool table `table` (its
+// lines) and an empty parameter file: its canonical listing.
+ncbridge::testing::ProgramRun run_rs274(const fs::path& rs274, const fs::path& dir, const std::string& table,
+                                        const fs::path& program) {
+  std::ofstream(dir / "tools.tbl") << table;
+  std::ofstream(dir / "params.var").close();
+  fs::create_directories(dir / "home");
+  ncbridge::testing::RunOptions options;
+  options.working_directory = dir;
+  options.extra_environment = {"HOME=" + (dir / "home").string()};
+  return ncbridge::testing::run_program(
+      {rs274.string(), "-g", "-n", "2", "-t", (dir / "tools.tbl").string(), "-v", (dir / "params.var").string(), program.string()},
+      options);
+}
+
 }  // namespace
 
 TEST(PlanCommand, PaperBlockGivesAValidReproducibleCc2File) {
@@ -191,15 +206,7 @@ TEST(PlanCommand, DrilledHolesGoOnToAProgramRs274Runs) {
     ASSERT_EQ(r.exit_code, 0) << to << ": " << r.err;
   }
 
-  std::ofstream(dir / "tools.tbl") << "T12 P12 Z0 D10 ;\nT20 P20 Z0 D10 ;\n";
-  std::ofstream(dir / "params.var").close();
-  fs::create_directories(dir / "home");
-  ncbridge::testing::RunOptions options;
-  options.working_directory = dir;
-  options.extra_environment = {"HOME=" + (dir / "home").string()};
-  const auto run274 = ncbridge::testing::run_program(
-      {rs274.string(), "-g", "-n", "2", "-t", (dir / "tools.tbl").string(), "-v", (dir / "params.var").string(), (dir / "rs274ngc.nc").string()},
-      options);
+  const auto run274 = run_rs274(rs274, dir, "T12 P12 Z0 D10 ;\nT20 P20 Z0 D10 ;\n", dir / "rs274ngc.nc");
   ASSERT_EQ(run274.exit_code, 0) << run274.err;
   EXPECT_EQ(run274.err.find("rror"), std::string::npos) << run274.err;
 
@@ -256,17 +263,9 @@ TEST(PlanCommand, GcodeWritesTheProgramOfThePlanInOneRun) {
   }
   EXPECT_GT(changes, 1);
   // LinuxCNC's interpreter runs it.
-  std::ofstream table(dir / "tools.tbl");
-  for (int t = 1; t <= 20; ++t) table << "T" << t << " P" << t << " Z0 D6 ;\n";
-  table.close();
-  std::ofstream(dir / "params.var").close();
-  fs::create_directories(dir / "home");
-  ncbridge::testing::RunOptions options;
-  options.working_directory = dir;
-  options.extra_environment = {"HOME=" + (dir / "home").string()};
-  const auto run274 = ncbridge::testing::run_program(
-      {rs274.string(), "-g", "-n", "2", "-t", (dir / "tools.tbl").string(), "-v", (dir / "params.var").string(), (dir / "bracket.ngc").string()},
-      options);
+  std::string table;
+  for (int t = 1; t <= 20; ++t) table += "T" + std::to_string(t) + " P" + std::to_string(t) + " Z0 D6 ;\n";
+  const auto run274 = run_rs274(rs274, dir, table, dir / "bracket.ngc");
   ASSERT_EQ(run274.exit_code, 0) << run274.err;
   EXPECT_EQ(run274.err.find("rror"), std::string::npos) << run274.err;
   EXPECT_NE(run274.out.find("STRAIGHT_FEED"), std::string::npos);
