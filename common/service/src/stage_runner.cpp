@@ -10,6 +10,8 @@
 #include <utility>
 
 #include "ncbridge/bus/reader.hpp"
+#include "ncbridge/bus/routed_writer.hpp"
+#include "ncbridge/bus/routing.hpp"
 #include "ncbridge/bus/wait_set.hpp"
 #include "ncbridge/bus/worker_directory.hpp"
 #include "ncbridge/bus/worker_presence.hpp"
@@ -26,6 +28,17 @@ wire::WorkerInfo worker_info(const std::string& stage, const std::string& worker
   wire::WorkerInfo info = bus::this_process_worker(stage);
   if (!worker_id.empty()) info.worker_id = worker_id;
   return info;
+}
+
+// A job input goes to its owner in the next stage; anything else to every reader.
+std::unique_ptr<bus::SampleWriter> output_writer(bus::Participant& participant, bus::Topic topic) {
+  if (bus::routed_to(topic)) return std::make_unique<bus::RoutedWriter>(participant, topic);
+  return std::make_unique<bus::Writer>(participant, topic);
+}
+
+// A job input is read from this worker's partition (only its jobs); anything else from all.
+std::string input_partition(bus::Topic topic, const std::string& stage, const std::string& worker_id) {
+  return bus::routed_to(topic) ? bus::worker_partition(stage, worker_id) : std::string();
 }
 
 // A whole-input stage as a stream: collects the samples, runs the stage after the last.
@@ -62,7 +75,7 @@ void JobContext::check_time() const {
 void JobContext::publish_on(bus::Topic topic, std::string_view subkey, std::uint64_t seq, std::uint32_t kind, bool last,
                             std::string_view payload) {
   check_time();
-  const auto it = std::find_if(outputs_.begin(), outputs_.end(), [topic](const bus::Writer* w) { return w->topic() == topic; });
+  const auto it = std::find_if(outputs_.begin(), outputs_.end(), [topic](const bus::SampleWriter* w) { return w->topic() == topic; });
   if (it == outputs_.end()) throw std::logic_error("the stage does not publish on " + std::string(bus::topic_name(topic)));
   (*it)->write(job_id_, subkey, seq, kind, last, payload);
   published_.emplace(topic, subkey);
@@ -77,10 +90,11 @@ struct StageRunner::State {
         directory(participant),
         status_reader(participant, bus::Topic::Status),
         status_writer(participant, bus::Topic::Status),
-        output(participant, spec.output),
+        output(output_writer(participant, spec.output)),
         wait_set(participant) {
-    for (const InputTopic& in : spec.inputs) inputs.emplace_back(in, bus::Reader(participant, in.topic));
-    for (const bus::Topic t : spec.other_outputs) other_outputs.push_back(std::make_unique<bus::Writer>(participant, t));
+    for (const InputTopic& in : spec.inputs)
+      inputs.emplace_back(in, bus::Reader(participant, in.topic, input_partition(in.topic, spec.stage, me())));
+    for (const bus::Topic t : spec.other_outputs) other_outputs.push_back(output_writer(participant, t));
     for (const auto& [in, reader] : inputs) wait_set.attach(reader);
     wait_set.attach(status_reader);
     wait_set.attach(directory.reader());
@@ -199,14 +213,14 @@ struct StageRunner::State {
     kept_bytes -= std::exchange(k.bytes, 0);
   }
 
-  bus::Writer& writer_of(bus::Topic topic) {
+  bus::SampleWriter& writer_of(bus::Topic topic) {
     for (auto& w : other_outputs) {
       if (w->topic() == topic) return *w;
     }
-    return output;
+    return *output;
   }
 
-  static void unregister(bus::Writer& writer, const std::string& key, const std::string& subkey) {
+  static void unregister(bus::SampleWriter& writer, const std::string& key, const std::string& subkey) {
     try {
       writer.unregister(key, subkey);
     } catch (const std::exception& e) {
@@ -239,6 +253,8 @@ struct StageRunner::State {
     if (started.contains(job_id)) return false;
     // A whole-input stage takes a job once all of it is here; a streaming one at its first sample.
     if (spec.open ? !assembler.ready(job_id) : !assembler.complete(job_id)) return false;
+    // A job input came to this worker because its publisher made it the owner.
+    if (bus::routed_to(assembler.key(job_id)->topic)) return true;
     return directory.tracker().owns(spec.stage, me(), job_id);
   }
 
@@ -270,7 +286,7 @@ struct StageRunner::State {
       p.progress = fraction;
       publish_status(std::move(p));
     };
-    std::vector<bus::Writer*> writers{&output};
+    std::vector<bus::SampleWriter*> writers{output.get()};
     for (auto& w : other_outputs) writers.push_back(w.get());
     a.context = std::make_unique<JobContext>(std::move(writers), job_id, progress, options.max_job_time);
     slot = &active.emplace(job_id, std::move(a)).first->second;
@@ -363,8 +379,8 @@ struct StageRunner::State {
   bus::WorkerDirectory directory;
   bus::Reader status_reader;
   bus::Writer status_writer;
-  bus::Writer output;
-  std::vector<std::unique_ptr<bus::Writer>> other_outputs;
+  std::unique_ptr<bus::SampleWriter> output;
+  std::vector<std::unique_ptr<bus::SampleWriter>> other_outputs;
   std::vector<std::pair<InputTopic, bus::Reader>> inputs;
   bus::WaitSet wait_set;  // declared after the readers: detached before they go
   JobAssembler assembler;
