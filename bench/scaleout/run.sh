@@ -84,10 +84,10 @@ for n in $COUNTS; do
     diff -rq "$W/reference" "$W/out" > /dev/null || { echo "outputs with $n workers differ from those with $first" >&2; exit 1; }
   fi
   read -r wall cu cs < "$W/time"
-  cpu=$(join <(sort "$W/before") <(sort "$W/after") | awk -v t="$TICK" '{ s += $6 - $3 } END { printf "%.2f", s / t }')
+  cpu=$(join <(sort "$W/before") <(sort "$W/after") | awk -v t="$TICK" '{ s += $7 - $3 } END { printf "%.2f", s / t }')
   [[ -n $reference_cpu ]] || reference_cpu=$cpu
   per_stage=$(join <(sort "$W/before") <(sort "$W/after") | awk '
-    { st = $2; if (st == "ncbridge") next; b = $7 - $4; sum[st] += b; cnt[st]++; if (b > max[st]) max[st] = b }
+    { st = $2; if (st == "ncbridge") next; b = $8 - $4; sum[st] += b; cnt[st]++; if (b > max[st]) max[st] = b }
     END { split("interpreter cc1-builder feature-recognizer step-writer", order, " ")
           for (i = 1; i <= 4; i++) { s = order[i]; printf "%s%.2f (max %.2f)", (i > 1 ? " | " : ""), sum[s] / cnt[s] / 1e6, max[s] / 1e6 } }')
   printf '| %d | %.1f | %.2f | %.2f | %.2f | %s |\n' "$n" "$wall" "$cpu" "$(echo "$cpu / $reference_cpu" | bc -l)" \

@@ -3,7 +3,9 @@
 // leaves has its jobs sent again to the survivor; a worker that joins takes only new jobs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <set>
 
@@ -91,6 +93,12 @@ TEST(RoutedWriter, EachJobGoesToItsOwnerOnlyAndMovesWhenItsWorkerLeaves) {
   Participant participant(env.config);
   Worker w1(participant, "w1"), w2(participant, "w2");
   RoutedWriter writer(participant, Topic::Canonical);
+  std::mutex told_mutex;
+  std::vector<std::string> told;
+  writer.report_to([&](const std::string& m) {
+    const std::lock_guard lock(told_mutex);
+    told.push_back(m);
+  });
   ASSERT_TRUE(writer.wait_for_readers(2, 5s));
   constexpr int kJobs = 24;
   for (int i = 0; i < kJobs; ++i) write_job(writer, job(i));
@@ -122,6 +130,11 @@ TEST(RoutedWriter, EachJobGoesToItsOwnerOnlyAndMovesWhenItsWorkerLeaves) {
   }
   EXPECT_EQ(w2.got.size(), of_w1.size()) << "w2 was sent again jobs it had";
   EXPECT_EQ(writer.resent(), 2 * of_w1.size());
+  {
+    const std::lock_guard lock(told_mutex);
+    const std::string expected = "job " + *of_w1.begin() + ": 2 sample(s) of ncbridge/canonical sent again, to cc1_builder worker w2";
+    EXPECT_NE(std::find(told.begin(), told.end(), expected), told.end()) << "not said: " << expected;
+  }
 
   // Later samples of a moved job follow it; an unregistered job leaves the writer.
   writer.write(*of_w1.begin(), "", 2, 2, true, "more");

@@ -1,10 +1,9 @@
 #include "ncbridge/bus/routed_writer.hpp"
 
-#include <spdlog/spdlog.h>
-
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <set>
@@ -16,6 +15,7 @@
 #include "ncbridge/bus/reader.hpp"
 #include "ncbridge/bus/rendezvous.hpp"
 #include "ncbridge/bus/routing.hpp"
+#include "ncbridge/bus/wait_set.hpp"
 #include "ncbridge/bus/worker_tracker.hpp"
 
 namespace ncbridge::bus {
@@ -34,12 +34,19 @@ std::string_view stage_of(Topic topic) {
 
 struct RoutedWriter::State {
   State(Participant& p, Topic t, std::chrono::milliseconds settle)
-      : participant(p), topic(t), stage(stage_of(t)), settle_until(Clock::now() + settle), workers(p, Topic::Workers) {
+      : participant(p),
+        topic(t),
+        stage(stage_of(t)),
+        settle_until(Clock::now() + settle),
+        workers(p, Topic::Workers),
+        news(p) {
+    news.attach(workers);
     follower = std::thread([this] { follow(); });
   }
 
   ~State() {
     stop = true;
+    news.wake();
     follower.join();
   }
 
@@ -49,26 +56,33 @@ struct RoutedWriter::State {
   };
   using JobKey = std::pair<std::string, std::string>;
 
-  // The workers topic, until the writer goes.
+  // The workers topic, until the writer goes: asleep until it says something (or the settle
+  // time ends).
   void follow() {
     while (!stop) {
-      std::vector<Received> news;
+      std::vector<Received> got;
       try {
-        news = workers.take(std::chrono::milliseconds(50));
+        const auto now = Clock::now();
+        const auto sleep = settled || now >= settle_until
+                               ? std::chrono::milliseconds(60'000)
+                               : std::chrono::duration_cast<std::chrono::milliseconds>(settle_until - now) +
+                                     std::chrono::milliseconds(1);
+        news.wait(sleep);
+        got = workers.take(std::chrono::milliseconds(0));
       } catch (const std::exception& e) {
-        spdlog::error("{}: cannot read the workers topic: {}", topic_name(topic), e.what());
+        tell(std::string(topic_name(topic)) + ": cannot read the workers topic: " + e.what());
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
         continue;
       }
       const std::lock_guard lock(mutex);
       bool changed = false;
-      for (const Received& r : news) changed = tracker.apply(r) || changed;
+      for (const Received& r : got) changed = tracker.apply(r) || changed;
       if (!settled && Clock::now() >= settle_until) settled = changed = true;
       if (!changed) continue;
       try {
         reassign();
       } catch (const std::exception& e) {
-        spdlog::error("{}: cannot send jobs to their new worker: {}", topic_name(topic), e.what());
+        tell(std::string(topic_name(topic)) + ": cannot send jobs to their new worker: " + e.what());
       }
       membership.notify_all();
     }
@@ -80,11 +94,13 @@ struct RoutedWriter::State {
     const auto is_live = [&](const std::string& w) { return std::binary_search(live.begin(), live.end(), w); };
     for (auto& [key, job] : jobs) {
       if (job.worker.empty() || is_live(job.worker)) continue;
-      spdlog::info("job {}: {} worker {} is gone; its {} input goes to another", key.first, stage, job.worker,
-                   topic_name(topic));
+      tell("job " + key.first + ": " + stage + " worker " + job.worker + " is gone; its " +
+           std::string(topic_name(topic)) + " input goes to another");
       job.worker.clear();
     }
     std::erase_if(writers, [&](const auto& w) { return !is_live(w.first); });  // frees the gone worker's history
+    // A writer for each live worker at once: it matches its reader before the first job comes.
+    for (const std::string& w : live) writer_of(w);
     for (auto& [key, job] : jobs) {
       if (job.worker.empty()) assign(key, job, live);
     }
@@ -99,10 +115,14 @@ struct RoutedWriter::State {
     for (const Envelope& e : job.samples) writer.write(e);
     if (ever_assigned.contains(key)) {
       resent += job.samples.size();
-      spdlog::info("job {}: {} sample(s) of {} sent again, to {} worker {}", key.first, job.samples.size(),
-                   topic_name(topic), stage, worker);
+      tell("job " + key.first + ": " + std::to_string(job.samples.size()) + " sample(s) of " +
+           std::string(topic_name(topic)) + " sent again, to " + stage + " worker " + worker);
     }
     ever_assigned.insert(key);
+  }
+
+  void tell(const std::string& message) const {
+    if (report) report(message);
   }
 
   Writer& writer_of(const std::string& worker) {
@@ -117,6 +137,7 @@ struct RoutedWriter::State {
   const std::string stage;
   const Clock::time_point settle_until;
   Reader workers;  // read by the follower thread only
+  WaitSet news;     // the workers reader, and wake() to stop
   mutable std::mutex mutex;
   mutable std::condition_variable membership;
   WorkerTracker tracker;
@@ -125,6 +146,7 @@ struct RoutedWriter::State {
   std::map<JobKey, Job> jobs;
   std::set<JobKey> ever_assigned;  // jobs sent to a worker before (a second send is a re-send)
   std::uint64_t resent = 0;
+  std::function<void(const std::string&)> report;
   std::atomic<bool> stop{false};
   std::thread follower;  // last: started once everything else is there
 };
@@ -190,6 +212,11 @@ std::optional<std::string> RoutedWriter::worker_of(std::string_view key, std::st
   const auto it = s.jobs.find({std::string(key), std::string(subkey)});
   if (it == s.jobs.end() || it->second.worker.empty()) return std::nullopt;
   return it->second.worker;
+}
+
+void RoutedWriter::report_to(std::function<void(const std::string&)> report) {
+  const std::lock_guard lock(state_->mutex);
+  state_->report = std::move(report);
 }
 
 std::uint64_t RoutedWriter::resent() const {

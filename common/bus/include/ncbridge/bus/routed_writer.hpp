@@ -12,6 +12,7 @@
 // thread follows the workers topic. Every member may be called from any thread.
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,6 +46,9 @@ class RoutedWriter final : public SampleWriter {
   std::optional<std::string> worker_of(std::string_view key, std::string_view subkey = {}) const;
   // How many samples were sent again to a job's new worker.
   std::uint64_t resent() const;
+  // Where to say that a job moved to another worker (and any error of the thread that moves
+  // them); by default nothing is said. Called on that thread.
+  void report_to(std::function<void(const std::string&)> report);
 
  private:
   struct State;

@@ -3,7 +3,10 @@
 // published in the partition of the worker of the reading stage that owns the job (rendezvous
 // hashing over the stage's live workers when the job is first written), and each worker reads
 // only its own partition. Every other topic (results, status, workers, a controller's blocks)
-// stays in the default partition, read by everyone.
+// stays in the default partition, read by everyone; the statuses that end a job (ERROR, the
+// step writer's DONE, a client's DELIVERED) are also published in kJobOverPartition, the only
+// statuses a worker reads (a worker need not hear every stage's RUNNING, PROGRESS and DONE of
+// every job: at many workers that traffic cost more than the jobs).
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,6 +14,8 @@
 #include "ncbridge/bus/topics.hpp"
 
 namespace ncbridge::bus {
+
+inline constexpr std::string_view kJobOverPartition = "ncbridge.over";
 
 // The stage that reads a routed topic; nullopt for a topic every reader gets whole.
 std::optional<std::string_view> routed_to(Topic topic);

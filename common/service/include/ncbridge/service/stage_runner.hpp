@@ -14,11 +14,13 @@
 //    part21, to everyone), and keeps it until the job is over;
 //  - publishes RUNNING, PROGRESS, DONE or ERROR (with the source location of an InputError) on
 //    the status topic, and goes on with the next job after an error;
-//  - reads the status topic: a job is over when the step_writer reports it DONE or any stage
-//    reports an ERROR; its input is dropped, work on it stops, and this stage's output
+//  - reads the statuses that end a job (published again in bus::kJobOverPartition; a worker
+//    does not read every RUNNING and PROGRESS): a job is over when the step_writer reports it
+//    DONE or any stage reports an ERROR; its input is dropped, work on it stops, and this stage's output
 //    instances of it are unregistered (which frees the writer's durable copy) — at once for an
 //    intermediate stage, after the retention policy for final results (part21) and statuses;
-//  - announces the worker (WorkerPresence), and its health as status samples with an empty job
+//  - announces the worker (WorkerPresence) with its jobs in progress (at most once a second),
+//    and its health as status samples with an empty job
 //    id (subkey "<stage>/<worker_id>"): "ready" at start, "stopped" on a clean exit;
 //  - stops a job that runs longer than RunnerOptions::max_job_time (--max-job-seconds) with an
 //    ERROR status naming it, and goes on: the limit is checked between samples, on every
