@@ -30,7 +30,7 @@
 #include "output_files.hpp"
 #include "tool_source.hpp"
 #include "ncbridge/bus/participant.hpp"
-#include "ncbridge/bus/writer.hpp"
+#include "ncbridge/bus/routed_writer.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/service/job_watch.hpp"
 #include "ncbridge/setup/stock.hpp"
@@ -223,7 +223,7 @@ int run_submit(const SubmitArguments& args) {
   std::vector<std::string> ids;
   for (const wire::Job& j : jobs) ids.push_back(j.job_id);
   service::JobWatch watch(participant, ids);  // before publishing: nothing is missed
-  bus::Writer programs(participant, bus::Topic::Programs);
+  bus::RoutedWriter programs(participant, bus::Topic::Programs);  // each job to its interpreter only
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(args.timeout_s * 1000));
   if (!programs.wait_for_readers(1, std::min(timeout, std::chrono::milliseconds(10'000)))) {
     throw ServiceUnavailable("no interpreter service on DDS domain " + std::to_string(participant.domain_id()) +

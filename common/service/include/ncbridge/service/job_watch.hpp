@@ -72,7 +72,8 @@ class JobWatch {
   bus::Reader status_;
   bus::Reader part21_;
   bus::WaitSet wait_set_;
-  bus::Writer delivered_;  // on the status topic
+  bus::Writer delivered_;       // on the status topic
+  bus::Writer delivered_over_;  // the same, in the partition the workers read (bus/routing.hpp)
 };
 
 }  // namespace ncbridge::service
