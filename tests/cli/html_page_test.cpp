@@ -1,0 +1,127 @@
+// The --html page's content without a browser (tests/cli/html_viewer_test.sh runs it in one):
+// a program's CC1 model, the CC1 model generated from a CC2 file (the CC2 features outlined, the
+// generated toolpaths drawn and tied to them by workingstep), and a plan with its toolpaths.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/run_program.hpp"
+
+namespace ncbridge::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using ncbridge::testing::ProgramRun;
+
+const fs::path kPlate = fs::path(NCBRIDGE_SOURCE_DIR) / "examples" / "plate";
+const fs::path kPart = fs::path(NCBRIDGE_SOURCE_DIR) / "examples" / "part";
+
+fs::path fresh_directory(const std::string& name) {
+  const fs::path dir = fs::path(NCBRIDGE_BINARY_DIR) / "test_output" / "cli_html" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+ProgramRun ncbridge(std::vector<std::string> args) {
+  args.insert(args.begin(), NCBRIDGE_EXECUTABLE);
+  return ncbridge::testing::run_program(args, {{}, {"SOURCE_DATE_EPOCH=1700000000"}, false});
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
+// The page's "wsf" array: the feature of each workingstep (-1: none).
+std::vector<int> workingstep_features(const std::string& page) {
+  std::smatch m;
+  EXPECT_TRUE(std::regex_search(page, m, std::regex("\"wsf\":\\[([-0-9,]*)\\]")));
+  std::vector<int> out;
+  std::stringstream in(m[1].str());
+  for (std::string item; std::getline(in, item, ',');) out.push_back(std::stoi(item));
+  return out;
+}
+
+std::vector<std::string> plate_args(const fs::path& dir, const std::string& level, const std::string& name) {
+  return {"convert", (kPlate / "plate.ngc").string(), "--tools", (kPlate / "tools.json").string(), "--stock",
+          (kPlate / "stock.json").string(), "--level", level, "-o", (dir / (name + ".stp")).string(), "--html",
+          (dir / (name + ".html")).string()};
+}
+
+TEST(HtmlPage, AProgramsCc1ModelIsDrawnWithItsToolpathFeaturesAndHoles) {
+  const fs::path dir = fresh_directory("cc1");
+  const ProgramRun r = ncbridge(plate_args(dir, "cc1", "plate"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string page = slurp(dir / "plate.html");
+  EXPECT_NE(page.find("<title>ncbridge CC1: plate.ngc</title>"), std::string::npos);
+  // The plate's CC1 model: its workingsteps (milling, each a TOOLPATH_FEATURE, and four drilling
+  // cycles on ROUND_HOLEs); the holes outlined, every workingstep tied to its feature.
+  const auto wsf = workingstep_features(page);
+  EXPECT_EQ(wsf.size(), 10u);
+  for (int f : wsf) EXPECT_GE(f, 0);
+  EXPECT_EQ(occurrences(page, "class=\"ol\" data-k="), 4u);
+  EXPECT_NE(page.find("toolpath_feature (6)"), std::string::npos);
+  EXPECT_NE(page.find("round_hole (4)"), std::string::npos);
+  EXPECT_GT(occurrences(page, "<polyline class=\"cut\""), 0u);
+  // The same model as without the page: the streamed and the whole-model writer agree.
+  const fs::path plain = fresh_directory("cc1_plain");
+  std::vector<std::string> args = plate_args(plain, "cc1", "plate");
+  args.resize(args.size() - 2);
+  ASSERT_EQ(ncbridge(args).exit_code, 0);
+  EXPECT_EQ(slurp(plain / "plate.stp"), slurp(dir / "plate.stp"));
+}
+
+TEST(HtmlPage, AGeneratedCc1ModelIsDrawnOnTheFeaturesOfItsCc2File) {
+  const fs::path dir = fresh_directory("generated");
+  ASSERT_EQ(ncbridge(plate_args(dir, "cc2", "plate_cc2")).exit_code, 0);
+  const ProgramRun r = ncbridge({"convert", (dir / "plate_cc2.stp").string(), "--level", "cc1", "-o", (dir / "gen.stp").string(),
+                                 "--html", (dir / "gen.html").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string cc2_page = slurp(dir / "plate_cc2.html");
+  const std::string page = slurp(dir / "gen.html");
+  EXPECT_NE(page.find("<title>ncbridge CC1: plate_cc2.stp</title>"), std::string::npos);
+  // The six CC2 features outlined (a face, a pocket, four holes), as on the CC2 page.
+  EXPECT_EQ(occurrences(page, "class=\"ol\" data-k="), 6u);
+  EXPECT_EQ(occurrences(cc2_page, "class=\"ol\" data-k="), 6u);
+  for (const char* feature : {"PLANAR FACE1", "POCKET1", "HOLE1 D=6MM", "HOLE4 D=6MM"}) {
+    EXPECT_NE(page.find(std::string("<title>") + feature + " ("), std::string::npos) << feature;
+  }
+  // Each generated workingstep is the CC2 file's, on its feature, with the strategy it states.
+  const auto wsf = workingstep_features(page);
+  EXPECT_EQ(wsf, workingstep_features(cc2_page));
+  EXPECT_EQ(wsf.size(), 6u);
+  for (int f : wsf) EXPECT_GE(f, 0);
+  EXPECT_NE(page.find("bottom_and_side_rough_milling T2 END_MILL_D8 (contour_parallel)"), std::string::npos);
+  // Generated toolpaths: more cutting moves than a drill's points.
+  EXPECT_GT(occurrences(page, "<polyline class=\"cut\""), 6u);
+}
+
+TEST(HtmlPage, APlanIsDrawnWithItsGeneratedToolpaths) {
+  const fs::path dir = fresh_directory("plan");
+  const ProgramRun r = ncbridge({"plan", (kPart / "bracket.step").string(), "--stock", (kPart / "stock.json").string(), "--tools",
+                                 (kPart / "tools.json").string(), "-o", (dir / "b.stp").string(), "--html", (dir / "b.html").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string page = slurp(dir / "b.html");
+  const auto wsf = workingstep_features(page);
+  ASSERT_FALSE(wsf.empty());
+  for (int f : wsf) EXPECT_GE(f, 0);
+  EXPECT_GT(occurrences(page, "<polyline class=\"cut\""), wsf.size());
+  EXPECT_EQ(page.find("toolpaths not generated"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ncbridge::cli
