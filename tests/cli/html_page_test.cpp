@@ -125,3 +125,78 @@ TEST(HtmlPage, APlanIsDrawnWithItsGeneratedToolpaths) {
 
 }  // namespace
 }  // namespace ncbridge::cli
+
+namespace ncbridge::cli {
+namespace {
+
+const fs::path kArcs = fs::path(NCBRIDGE_SHARED_DIR) / "corpus" / "arcs";
+
+// The body's data-layer-counts: motions before, lines and arcs after, in the layer drawn.
+std::vector<int> layer_counts(const std::string& page) {
+  std::smatch m;
+  EXPECT_TRUE(std::regex_search(page, m, std::regex("data-layer-counts=\"([0-9]+) ([0-9]+) ([0-9]+)\"")));
+  return {std::stoi(m[1].str()), std::stoi(m[2].str()), std::stoi(m[3].str())};
+}
+
+std::string chosen_layer(const std::string& page) {
+  std::smatch m;
+  EXPECT_TRUE(std::regex_search(page, m, std::regex("<body[^>]* data-layer=\"([0-9]+)\"")));
+  return m[1].str();
+}
+
+TEST(OptimizeHtmlPage, TheCylindersMiddleLayerComesDownToAFewArcs) {
+  const fs::path dir = fresh_directory("optimize_cylinder");
+  const ProgramRun r = ncbridge({"optimize", (kArcs / "slic3r129_cylinder.gcode").string(), "--flavor", "marlin", "-o",
+                                 (dir / "c.gcode").string(), "--html", (dir / "c.html").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string page = slurp(dir / "c.html");
+  // 100 layers (0.3 mm, the first at 0.2): the middle one is the 50th, at Z 15; a polygonal circle of ~150 motions becomes
+  // a handful of arcs (three perimeters) and short lines.
+  EXPECT_NE(page.find("layer 50 of 100, Z 15 mm"), std::string::npos);
+  const auto counts = layer_counts(page);
+  EXPECT_GT(counts[0], 100);
+  EXPECT_GE(counts[2], 3);
+  EXPECT_LT(counts[1] + counts[2], counts[0] / 10);
+  EXPECT_EQ(occurrences(page, "<polyline class=\"arc\""), static_cast<std::size_t>(counts[2]));
+  EXPECT_EQ(page.find("<script src"), std::string::npos);
+}
+
+TEST(OptimizeHtmlPage, ALayerIsChosenByNumberOrZAndAMissingOneIsAUsageErrorWithNothingWritten) {
+  const fs::path dir = fresh_directory("optimize_layers");
+  const std::string program = (kArcs / "slic3r129_cylinder.gcode").string();
+  auto run = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args{"optimize", program, "--flavor", "marlin", "-o", (dir / "c.gcode").string(), "--html",
+                                  (dir / "c.html").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return ncbridge(args);
+  };
+  ASSERT_EQ(run({"--html-layer", "1"}).exit_code, 0);
+  EXPECT_EQ(chosen_layer(slurp(dir / "c.html")), "1");
+  ASSERT_EQ(run({"--html-z", "3"}).exit_code, 0);
+  EXPECT_NE(slurp(dir / "c.html").find(", Z 3 mm"), std::string::npos);
+  fs::remove(dir / "c.html");
+  fs::remove(dir / "c.gcode");
+  const ProgramRun missing = run({"--html-layer", "500"});
+  EXPECT_EQ(missing.exit_code, 2) << missing.err;
+  EXPECT_NE(missing.err.find("--html-layer 500: the program has 100 layers"), std::string::npos) << missing.err;
+  EXPECT_FALSE(fs::exists(dir / "c.html"));
+  EXPECT_FALSE(fs::exists(dir / "c.gcode"));
+  const ProgramRun no_z = run({"--html-z", "3.33"});
+  EXPECT_EQ(no_z.exit_code, 2) << no_z.err;
+  EXPECT_NE(no_z.err.find("no layer at that Z"), std::string::npos) << no_z.err;
+  EXPECT_EQ(ncbridge({"optimize", program, "--flavor", "marlin", "-o", (dir / "c.gcode").string(), "--html-layer", "2"}).exit_code, 2);
+}
+
+TEST(OptimizeHtmlPage, ACncProgramsLayerIsDrawnFromItsDialectsOutput) {
+  const fs::path dir = fresh_directory("optimize_cnc");
+  const ProgramRun r = ncbridge({"optimize", (fs::path(NCBRIDGE_SOURCE_DIR) / "examples" / "optimize" / "pocket_wall.ngc").string(),
+                                 "--dialect", "rs274ngc", "--to", "fanuc", "-o", (dir / "p.nc").string(), "--html", (dir / "p.html").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto counts = layer_counts(slurp(dir / "p.html"));
+  EXPECT_GT(counts[0], 50);
+  EXPECT_GE(counts[2], 1);
+  EXPECT_LT(counts[1] + counts[2], counts[0]);
+}
+
+}  // namespace
+}  // namespace ncbridge::cli

@@ -108,4 +108,30 @@ convert cam_open_pockets "$cam/part.linuxcnc.ngc" "$cam/tools.json" "$cam/stock.
 check_page cam_open_pockets
 generated cam_open_pockets_generated cam_open_pockets
 check_page cam_open_pockets_generated screenshot
+# optimize --html: one layer before and after. In the browser: no console error, every output
+# arc of the layer drawn as one, the input's motion ends dotted (one more than its motions per
+# joined run), the output's too.
+check_optimize_page() {  # NAME PROGRAM [optimize options...]
+  local name=$1 program=$2
+  shift 2
+  "$NCBRIDGE" optimize "$program" "$@" -o "$WORK/$name.out" --html "$WORK/$name.html" -q 2> "$WORK/$name.log" ||
+    fail "$name: optimize: $(cat "$WORK/$name.log")"
+  browser --enable-logging=stderr --v=0 --dump-dom "file://$WORK/$name.html" > "$WORK/$name.dom" 2> "$WORK/$name.console" ||
+    fail "$name: chromium failed"
+  if grep -E 'Uncaught|:ERROR:CONSOLE' "$WORK/$name.console" | grep -q .; then
+    fail "$name: console errors: $(grep -E 'Uncaught|:ERROR:CONSOLE' "$WORK/$name.console" | head -5)"
+  fi
+  local drawn counts before lines arcs
+  drawn=$(attribute "$name" drawn)
+  counts=$(grep -o 'data-layer-counts="[^"]*"' "$WORK/$name.html" | sed 's/.*="\(.*\)"/\1/')
+  read -r before lines arcs <<< "$counts"
+  [[ "$before" -gt 0 ]] || fail "$name: an empty layer: $counts"
+  [[ "$(json_field "$drawn" after_arcs)" -eq "$arcs" ]] || fail "$name: $arcs arcs in the layer, $drawn drawn"
+  [[ "$(json_field "$drawn" before_dots)" -eq $((before + $(json_field "$drawn" before_runs))) ]] ||
+    fail "$name: the input's $before motions in $(json_field "$drawn" before_runs) runs, $drawn drawn"
+  [[ "$(json_field "$drawn" after_dots)" -gt "$arcs" ]] || fail "$name: the output's ends are not dotted: $drawn"
+  echo "$name: layer counts $counts, drawn $drawn"
+}
+check_optimize_page optimize_cylinder "$SHARED/corpus/arcs/slic3r129_cylinder.gcode" --flavor marlin
+check_optimize_page optimize_pocket_wall "$SRC/examples/optimize/pocket_wall.ngc" --dialect rs274ngc --loops
 echo "PASS: the HTML viewer in Chromium"
