@@ -395,8 +395,10 @@ std::string html_report(const HtmlReportInput& in) {
   svg += "<rect class=\"stock\" x=\"" + num(v.sx(stock.min[0]), 2) + "\" y=\"" + num(v.sy(stock.max[1]), 2) + "\" width=\"" +
          num(stock.size(0) * v.scale, 2) + "\" height=\"" + num(stock.size(1) * v.scale, 2) +
          "\" fill=\"#f4f1ea\" stroke=\"#999\" stroke-width=\"1\"/>\n";
-  svg += "<text x=\"" + num(v.sx(stock.min[0]), 2) + "\" y=\"" + num(v.sy(stock.min[1]) + 14, 2) + "\" class=\"axis\">X" +
-         num(stock.min[0], 2) + " Y" + num(stock.min[1], 2) + "</text>\n";
+  if (!show_origin || std::abs(stock.min[0]) > 1e-6 || std::abs(stock.min[1]) > 1e-6) {  // else the axes mark it
+    svg += "<text x=\"" + num(v.sx(stock.min[0]), 2) + "\" y=\"" + num(v.sy(stock.min[1]) + 14, 2) + "\" class=\"axis\">X" +
+           num(stock.min[0], 2) + " Y" + num(stock.min[1], 2) + "</text>\n";
+  }
   svg += "<text x=\"" + num(v.sx(stock.max[0]), 2) + "\" y=\"" + num(v.sy(stock.max[1]) - 6, 2) +
          "\" class=\"axis\" text-anchor=\"end\">X" + num(stock.max[0], 2) + " Y" + num(stock.max[1], 2) + "</text>\n";
   if (show_origin) {
@@ -589,11 +591,16 @@ std::string html_report(const HtmlReportInput& in) {
           "#top g.hl{stroke-width:5;stroke-dasharray:none}#top .dim{opacity:0.1}#top .off{display:none}\n"
           "#top .label{font:bold 12px system-ui,sans-serif;text-anchor:middle;dominant-baseline:middle;paint-order:stroke;stroke:#fff;stroke-width:3px}\n"
           "#top .axis{font:12px system-ui,sans-serif;fill:#666}\n"
-          "#scalebar{position:absolute;left:12px;bottom:10px;font:11px system-ui,sans-serif;background:rgba(255,255,255,.85);padding:2px 4px}\n"
+          "#scalebar{position:absolute;right:12px;bottom:10px;font:11px system-ui,sans-serif;background:rgba(255,255,255,.85);padding:2px 4px}\n"
           "#scalebar div{height:5px;border:1.5px solid #222;border-top:none}\n"
-          "#pointer{position:absolute;right:10px;bottom:10px;font:11px ui-monospace,monospace;background:rgba(255,255,255,.85);padding:2px 4px}\n"
+          "#pointer{position:absolute;right:10px;top:6px;font:11px ui-monospace,monospace;background:rgba(255,255,255,.85);padding:2px 4px}\n"
           ".note{color:#666;font-weight:normal}.setup{border:2px solid #c0392b;background:#fdecea;padding:4px 10px;margin-bottom:8px}\n"
-          ".setup h2{color:#c0392b;margin-top:4px}\n</style>\n</head>\n<body>\n<main>\n<h1>" +
+          ".setup h2{color:#c0392b;margin-top:4px}\n"
+          "body.picture aside,body.picture h1,body.picture h2,body.picture .toolbar,body.picture .controls,body.picture #view3d,"
+          "body.picture #view3d-status,body.picture #pointer{display:none}body.picture main,body.picture3d main{padding:0}"
+          "body.picture #drawing{border:none}body.picture #top{width:100vw;height:100vh}\n"
+          "body.picture3d aside,body.picture3d h1,body.picture3d h2,body.picture3d .toolbar,body.picture3d .controls,"
+          "body.picture3d #drawing,body.picture3d #view3d-status{display:none}body.picture3d #view3d{width:100vw;height:100vh;border:none}\n</style>\n</head>\n<body>\n<main>\n<h1>" +
           escape(in.title) + " &#8212; " + escape(in.level) + ", top view <span class=\"note\">mm &#183; wheel: zoom &#183; drag: pan &#183; double click: whole view</span></h1>\n" +
           toolbar + "<div id=\"drawing\">" + svg + "<div id=\"scalebar\"><div></div><span></span></div><div id=\"pointer\"></div></div>\n" +
           view3d + "</main>\n<aside>\n" + panel + "</aside>\n" + scripts + "</body>\n</html>\n";

@@ -10,6 +10,10 @@
 (function () {
   'use strict';
   var data = JSON.parse(document.getElementById('ncb-data').textContent);
+  // #picture: the top view alone, filling the window; #picture3d: the 3D view alone (the
+  // documentation's screenshots, scripts/make-doc-pictures.sh).
+  if (location.hash === '#picture') document.body.classList.add('picture');
+  if (location.hash === '#picture3d') document.body.classList.add('picture3d');
   function each(selector, f, root) { Array.prototype.forEach.call((root || document).querySelectorAll(selector), f); }
 
   // ---- Top view: wheel zoom about the pointer, drag to pan, double click for the whole drawing.

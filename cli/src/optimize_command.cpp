@@ -166,7 +166,7 @@ std::string optimize_page(const OptimizeArguments& args, const toolpath_optimize
   }
   OptimizeHtmlInput page;
   page.program = fs::path(args.program).filename().string();
-  page.output = output_name;
+  page.output = fs::path(output_name).filename().string();
   page.before = &before.pieces;
   page.after = &after.pieces;
   page.result = &result;

@@ -148,6 +148,7 @@ std::string side_svg(const std::vector<const to::PathPiece*>& pieces, const Fram
 const char* const kScript = R"JS(
 (function () {
   'use strict';
+  if (location.hash === '#picture') document.body.classList.add('picture');  // the drawings alone (docs)
   // Both drawings share one view box: wheel zoom about the pointer, drag to pan, double click
   // for the whole layer; the dots keep their size on the screen.
   var svgs = Array.prototype.slice.call(document.querySelectorAll('svg.layer'));
@@ -200,6 +201,8 @@ const char* const kScript = R"JS(
 )JS";
 
 }  // namespace
+
+static std::string count(std::size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
 
 std::string optimize_html(const OptimizeHtmlInput& in) {
   const auto& before = *in.before;
@@ -299,11 +302,11 @@ std::string optimize_html(const OptimizeHtmlInput& in) {
                      ".sides{display:flex;gap:12px;flex-wrap:wrap}.side{flex:1 1 480px;min-width:0}\n"
                      ".frame{position:relative;border:1px solid #ccc;background:#fff}svg.layer{display:block;width:100%;height:auto;cursor:grab}\n"
                      "svg.layer polyline{vector-effect:non-scaling-stroke}\n"
-                     ".scalebar{position:absolute;left:10px;bottom:8px;font:11px system-ui,sans-serif;background:rgba(255,255,255,.85);padding:2px 4px}\n"
+                     ".scalebar{position:absolute;right:10px;bottom:8px;font:11px system-ui,sans-serif;background:rgba(255,255,255,.85);padding:2px 4px}\n"
                      ".scalebar div{height:5px;border:1.5px solid #222;border-top:none}\n"
                      "table{border-collapse:collapse}td,th{border-bottom:1px solid #e2e2e2;padding:2px 8px;text-align:left}tr.chosen{background:#fff3b0}\n"
                      ".key span{display:inline-block;width:22px;height:0;vertical-align:middle;margin:0 4px 0 12px;border-top:2px solid}\n"
-                     ".note{color:#666}\n</style>\n</head>\n<body data-scale=\"" + num(f.scale, 6) + "\" data-layer=\"" + std::to_string(chosen + 1) +
+                     ".note{color:#666}body.picture .tables,body.picture h1 .note{display:none}\n</style>\n</head>\n<body data-scale=\"" + num(f.scale, 6) + "\" data-layer=\"" + std::to_string(chosen + 1) +
                      "\" data-layer-counts=\"" + std::to_string(c.before_cuts) + " " + std::to_string(c.after_lines) + " " + std::to_string(c.after_arcs) + "\">\n"
                      "<h1>" + escape(in.program) + " &#8594; " + escape(in.output) + ": layer " + std::to_string(chosen + 1) + " of " + std::to_string(layers.size()) +
                      ", Z " + num(z, 2) + " mm <span class=\"note\">mm, top view &#183; wheel: zoom &#183; drag: pan &#183; double click: whole layer &#183; "
@@ -312,10 +315,10 @@ std::string optimize_html(const OptimizeHtmlInput& in) {
                      "<span style=\"border-color:#d62728\"></span>output arcs<span style=\"border-top:1px dashed #999\"></span>" + std::string(in.printer ? "travel (no extrusion)" : "rapid moves") + " &#183; dots: the ends of each motion"
                      "</p>\n<div class=\"sides\"><div class=\"side\"><h2>Before: " + std::to_string(c.before_cuts) + " motions</h2><div class=\"frame\">" + before_svg +
                      "<div class=\"scalebar\"><div></div><span></span></div></div></div>\n<div class=\"side\"><h2>After: " +
-                     std::to_string(c.after_lines) + " lines and " + std::to_string(c.after_arcs) + " arcs</h2><div class=\"frame\">" + after_svg +
+                     count(c.after_lines, "line", "lines") + " and " + count(c.after_arcs, "arc", "arcs") + "</h2><div class=\"frame\">" + after_svg +
                      "<div class=\"scalebar\"><div></div><span></span></div></div></div></div>\n";
   if (before_dots >= kMaxDots || after_dots >= kMaxDots) html += "<p class=\"note\">Only the first " + std::to_string(kMaxDots) + " ends are dotted.</p>\n";
-  html += "<h2>Counts</h2>\n" + stats + "<h2>Layers</h2>\n" + table + "<script>" + kScript + "</script>\n</body>\n</html>\n";
+  html += "<div class=\"tables\"><h2>Counts</h2>\n" + stats + "<h2>Layers</h2>\n" + table + "</div><script>" + kScript + "</script>\n</body>\n</html>\n";
   return html;
 }
 
