@@ -3,6 +3,7 @@
 // generated toolpaths drawn and tied to them by workingstep), and a plan with its toolpaths.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -196,6 +197,58 @@ TEST(OptimizeHtmlPage, ACncProgramsLayerIsDrawnFromItsDialectsOutput) {
   EXPECT_GT(counts[0], 50);
   EXPECT_GE(counts[2], 1);
   EXPECT_LT(counts[1] + counts[2], counts[0]);
+}
+
+}  // namespace
+}  // namespace ncbridge::cli
+
+namespace ncbridge::cli {
+namespace {
+
+TEST(HtmlPage, GcodeDrawsTheToolpathsOfTheProgramItWritesFromAStepncFile) {
+  const fs::path dir = fresh_directory("gcode");
+  ASSERT_EQ(ncbridge(plate_args(dir, "cc2", "plate_cc2")).exit_code, 0);
+  const ProgramRun r = ncbridge({"gcode", (dir / "plate_cc2.stp").string(), "--to", "fanuc", "-o", (dir / "p.nc").string(), "--html",
+                                 (dir / "g.html").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string page = slurp(dir / "g.html");
+  EXPECT_EQ(occurrences(page, "class=\"ol\" data-k="), 6u);
+  EXPECT_EQ(workingstep_features(page), workingstep_features(slurp(dir / "plate_cc2.html")));
+  EXPECT_NE(page.find("does not break through"), std::string::npos);  // the generator's warnings, on the page too
+  // A program is translated, not modelled: the page is convert's; nothing is written.
+  const ProgramRun program = ncbridge({"gcode", (kPlate / "plate.ngc").string(), "--tools", (kPlate / "tools.json").string(), "--to",
+                                       "fanuc", "-o", (dir / "q.nc").string(), "--html", (dir / "q.html").string()});
+  EXPECT_EQ(program.exit_code, 2) << program.err;
+  EXPECT_NE(program.err.find("convert PROGRAM --level cc1 --html"), std::string::npos) << program.err;
+  EXPECT_FALSE(fs::exists(dir / "q.nc"));
+  EXPECT_FALSE(fs::exists(dir / "q.html"));
+}
+
+// The documentation's CC2 examples (docs/toolpaths.md, "Pictures") generate without a warning,
+// each workingstep on its feature, every feature outlined.
+TEST(HtmlPage, TheToolpathExamplesGenerateCleanly) {
+  const fs::path dir = fresh_directory("examples");
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(NCBRIDGE_SOURCE_DIR) / "examples" / "toolpaths")) {
+    if (entry.path().extension() != ".stp") continue;
+    ++files;
+    const std::string name = entry.path().stem().string();
+    const ProgramRun r = ncbridge({"convert", entry.path().string(), "--level", "cc1", "-o", (dir / (name + ".stp")).string(),
+                                   "--html", (dir / (name + ".html")).string()});
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    EXPECT_EQ(r.err.find("ncbridge: warning"), std::string::npos) << name << ": " << r.err;
+    const std::string page = slurp(dir / (name + ".html"));
+    const auto wsf = workingstep_features(page);
+    ASSERT_FALSE(wsf.empty()) << name;
+    for (int f : wsf) EXPECT_GE(f, 0) << name;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(page, m, std::regex("\"fk\":\\[([0-9,]*)\\]"))) << name;
+    const std::string kinds = m[1].str();
+    const std::size_t features = static_cast<std::size_t>(std::count(kinds.begin(), kinds.end(), ',') + 1);
+    EXPECT_EQ(occurrences(page, "class=\"ol\" data-k="), features) << name;
+    EXPECT_GT(occurrences(page, "<polyline class=\"cut\""), 0u) << name;
+  }
+  EXPECT_EQ(files, 9u);
 }
 
 }  // namespace
