@@ -207,29 +207,45 @@ int run_plan(const PlanArguments& args) {
                             {"total", ms(Clock::now() - t0)}};
     report_text = report.dump(2) + "\n";
   }
+  // The plan's toolpaths, generated (as `convert --level cc1` does) for the program and the page.
+  // The program needs them (a refusal leaves every output unwritten); the page without a program
+  // shows the plan and says why they are missing.
+  std::optional<stepnc::Project> cc1;
+  std::vector<std::string> page_warnings = warnings;
+  if (gcode_file || !args.html.empty()) {
+    std::vector<std::string> notes;
+    try {
+      cc1 = generate_cc1(plan.project, *stock, args.part, notes);
+    } catch (const InputError& e) {
+      if (gcode_file) throw;
+      page_warnings.push_back("toolpaths not generated: " + e.message());
+    }
+    if (gcode_file) {
+      for (const auto& n : notes) print_warning({args.part, 0, 0}, n);
+    }
+    page_warnings.insert(page_warnings.end(), notes.begin(), notes.end());
+  }
   if (!args.html.empty()) {
     HtmlReportInput page;
     page.title = std::filesystem::path(args.part).filename().string() + " (planned)";
-    page.cc2 = &cc2;
-    page.warnings = warnings;
+    page.stock = *stock;
+    page.model = &plan.project;
+    if (cc1) page.toolpaths = &*cc1;
+    page.warnings = page_warnings;
     html_text = html_report(page);
   }
 
-  // The program: the plan's toolpaths generated (as `convert --level cc1` does) and written
-  // (as `gcode` does); any refusal leaves every output unwritten.
+  // The program: the generated toolpaths written (as `gcode` does).
   std::string program_text;
   if (gcode_file) {
-    std::vector<std::string> notes;
-    const stepnc::Project cc1 = generate_cc1(plan.project, *stock, args.part, notes);
-    for (const auto& n : notes) print_warning({args.part, 0, 0}, n);
-    gcode_writer::Options options;
-    options.dialect = *gcode_writer::parse_dialect(args.to);
-    options.tools = gcode_writer::stepnc_tools(cc1);
+    gcode_writer::Options writer_options;
+    writer_options.dialect = *gcode_writer::parse_dialect(args.to);
+    writer_options.tools = gcode_writer::stepnc_tools(*cc1);
     std::string name = std::filesystem::path(gcode_file->file_name()).stem().string();
     for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : '_';
-    if (!name.empty()) options.program_name = name;
-    gcode_writer::ProgramWriter writer(options, [&](std::string_view piece) { program_text += piece; });
-    gcode_writer::interpret_stepnc(cc1, args.part, gcode_writer::StepncOptions{}, writer);
+    if (!name.empty()) writer_options.program_name = name;
+    gcode_writer::ProgramWriter writer(writer_options, [&](std::string_view piece) { program_text += piece; });
+    gcode_writer::interpret_stepnc(*cc1, args.part, gcode_writer::StepncOptions{}, writer);
   }
 
   stp.write(cc2_text);
@@ -254,7 +270,7 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--to", args->to, "Dialect of --gcode (default rs274ngc)")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain"}));
   cmd->add_option("--report", args->report, "Also write a JSON report (docs/plan.md)");
-  cmd->add_option("--html", args->html, "Also write an HTML page of the planned features");
+  cmd->add_option("--html", args->html, "Also write an HTML page of the planned features and their generated toolpaths");
   cmd->add_option("--setup", args->setup, "The part's side facing the spindle: +z (default), -z, +x, -x, +y, -y");
   cmd->add_option("--part-offset", args->part_offset, "Move the part by X,Y,Z mm into the program frame")->expected(3)->delimiter(',');
   cmd->add_option("--material", args->material, "Work material for default cutting data: steel, aluminium, stainless, cast_iron, brass, plastic");

@@ -56,7 +56,7 @@ fi
 
 # What the tour says it makes.
 for f in out/plate_cc1.stp out/plate_cc2.stp out/plate.html plate.stp plate.json plate.html plate_cc2.stp part.stp \
-  plate.nc plate.tap plate.mpf plate.h plate.ngc bracket_cc2.stp bracket.json bracket.html block_cc2.stp \
+  plate.nc plate.tap plate.mpf plate.h plate.ngc bracket_cc2.stp bracket.json bracket.html block_cc2.stp plate_generated.html \
   out/plate.stp out/plate_tnc.stp; do
   [[ -s "$ROOT/$f" && ! -L "$ROOT/$f" ]] || fail "the tour did not make $f"
 done
