@@ -143,3 +143,27 @@ TEST(MillingStrategy, BackAndForthOnOneLineIsCentreMilling) {
   b.feed(60, 10, -2).feed(10, 10, -2).feed(60, 10, -2);
   EXPECT_EQ(only_layer(b).strategy, fr::Strategy::CenterMilling);
 }
+
+// The generator's contour-parallel finish of a pocket: a loop round the middle entered half-way
+// along a side, then the loop along the walls, also entered mid-side. Their long sides step one
+// way (77, 63, 54, 86, 54) as a zigzag's would; two large loops make them contours.
+TEST(MillingStrategy, TwoNestedLoopsEnteredMidSideAreContourParallel) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 18)).rapid(63, 88, 5).feed(63, 88, -30);
+  b.feed(63, 92, -30).feed(77, 92, -30).feed(77, 48, -30).feed(63, 48, -30).feed(63, 88, -30);
+  b.feed(54, 88, -30).feed(54, 101, -30).feed(86, 101, -30).feed(86, 39, -30).feed(54, 39, -30).feed(54, 88, -30);
+  const auto s = only_layer(b);
+  EXPECT_EQ(s.strategy, fr::Strategy::ContourParallel);
+  EXPECT_EQ(s.closed_loops, 2);
+}
+
+// One loop along a rotated pocket's walls entered part-way along its long side (a vertex splits
+// that side in two): one contour, not three passes.
+TEST(MillingStrategy, OneLoopWithASplitSideIsAContour) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 10)).rapid(52.910, 56.657, 5).feed(52.910, 56.657, -9);
+  b.feed(43.141, 52.101, -9).feed(31.766, 46.797, -9).feed(35.572, 38.635, -9).feed(58.234, 49.203, -9).feed(54.428, 57.365, -9);
+  b.feed(52.910, 56.657, -9);
+  const auto s = only_layer(b);
+  EXPECT_EQ(s.strategy, fr::Strategy::Contour);
+}

@@ -37,14 +37,17 @@ const std::vector<std::string> kParts = {
 // (BIDIRECTIONAL_CONTOUR), some generated strategies read back as another one: the material
 // removed is the same (checked above), the strategy named differs.
 const std::map<std::string, std::size_t> kKnownDifferences = {
-    {"test_part", 1},              // a CONTOUR_PARALLEL finish pass comes back BIDIRECTIONAL
-    {"p02_plate_center_zero", 1},  // a CONTOUR_PARALLEL face finish comes back CENTER_MILLING
-    {"p03_bracket_steps", 2},  // a face's stepover side is named; a step cut by CENTER_MILLING comes back BIDIRECTIONAL
-    {"p04_open_pockets", 1},       // a BIDIRECTIONAL open pocket comes back CENTER_MILLING
-    {"p05_slots", 1},              // a BIDIRECTIONAL slot comes back CENTER_MILLING
-    {"p09_small_part", 1},         // a CONTOUR_PARALLEL profile's strategy is not named
+    // STEP1's CONTOUR_BIDIRECTIONAL is generated as one pass along the step (the recogniser reads
+    // the feed direction off the contour, along the step, and the step is one cutter wide) and
+    // comes back CENTER_MILLING. Hidden until 2026-11-26: the comparison printed every strategy
+    // it did not name as CENTER_MILLING, so the two compared equal.
+    {"p01_block_reference", 1},
+    {"p02_plate_center_zero", 1},  // a CONTOUR_PARALLEL face finish (3 loops) comes back BIDIRECTIONAL_CONTOUR
+    {"p03_bracket_steps", 2},  // a face's stepover side is named; a BIDIRECTIONAL_CONTOUR step comes back BIDIRECTIONAL
+    {"p04_open_pockets", 1},   // a BIDIRECTIONAL open pocket's finishing contour makes it BIDIRECTIONAL_CONTOUR
+    {"p05_slots", 1},          // a BIDIRECTIONAL slot comes back BIDIRECTIONAL_CONTOUR
+    {"p09_small_part", 1},     // a CONTOUR_PARALLEL profile's strategy is not named
     {"p08_multi_level", 10},   // steps 0.5 mm off; profile, step and open pocket read as other features
-    {"p11_slots_rotated_pocket", 1},  // a CONTOUR_PARALLEL pocket comes back BIDIRECTIONAL
     {"p12_freecad_style", 3},  // a milled hole's strategy, an open pocket's sense, one open pocket 0.5 mm off
 };
 

@@ -92,6 +92,16 @@ int count_closed_loops(const std::vector<Point2>& run, double min_length,
   return loops;
 }
 
+// Whether `next` goes on in the direction of `s` along its line (within 0.01 mm of it).
+bool continues(const Straight& s, const Straight& next) {
+  const double len = s.length(), next_len = next.length();
+  if (len < 1e-6 || next_len < 1e-6) return false;
+  const double ux = (s.b.x - s.a.x) / len, uy = (s.b.y - s.a.y) / len;
+  const double along = ((next.b.x - next.a.x) * ux + (next.b.y - next.a.y) * uy) / next_len;
+  const double off = std::abs(-(next.b.x - s.a.x) * uy + (next.b.y - s.a.y) * ux);
+  return along > 0 && off < 0.01;
+}
+
 // True when the moves lie on one straight line (within 0.05 mm), the longest move's.
 bool on_one_line(const std::vector<Straight>& straights) {
   const Straight* longest = nullptr;
@@ -412,7 +422,14 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
     for (std::size_t i = 1; i < run.size(); ++i) {
       Straight s{run[i - 1], run[i]};
       total += s.length();
-      if (s.length() > 1e-6) straights.push_back(s);
+      if (s.length() <= 1e-6) continue;
+      // A move that goes on along the line of the one before (a vertex where a loop was
+      // entered, a pass split by a tab) is one pass with it.
+      if (!straights.empty() && straights.back().b.x == s.a.x && straights.back().b.y == s.a.y && continues(straights.back(), s)) {
+        straights.back().b = s.b;
+      } else {
+        straights.push_back(s);
+      }
     }
   }
   if (total <= 0) {
@@ -448,8 +465,10 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
       return out;
     }
     // Two passes side by side (joined by a rapid, as a face milled in two passes) sweep too.
+    // Passes close no loop but a finishing contour: two or more large loops are nested
+    // contours, whose parallel sides can step one way too.
     const bool enough = passes->count() >= 3 || (passes->count() == 2 && out.closed_loops == 0);
-    if (enough && passes->progress()) {
+    if (enough && passes->progress() && large_loops < 2) {
       out.stepover = passes->stepover();
       out.strategy = passes->strategy();
       return out;

@@ -109,7 +109,14 @@ std::string strategy(const sn::Operation& op) {
           r += s.rotation_direction ? (*s.rotation_direction == sn::RotDirection::Cw ? " CW" : " CCW") : " $";
           r += s.cutmode ? (*s.cutmode == sn::CutmodeType::Climb ? " CLIMB" : " CONVENTIONAL") : " $";
           return r;
+        } else if constexpr (std::is_same_v<S, sn::BidirectionalContour> || std::is_same_v<S, sn::ContourBidirectional>) {
+          std::string r = std::is_same_v<S, sn::BidirectionalContour> ? "BIDIRECTIONAL_CONTOUR " : "CONTOUR_BIDIRECTIONAL ";
+          r += direction(s.feed_direction) + " " + (s.stepover_direction ? (*s.stepover_direction == sn::LeftOrRight::Left ? "LEFT" : "RIGHT") : "$");
+          r += s.rotation_direction ? (*s.rotation_direction == sn::RotDirection::Cw ? " CW" : " CCW") : " $";
+          r += s.spiral_cutmode ? (*s.spiral_cutmode == sn::CutmodeType::Climb ? " CLIMB" : " CONVENTIONAL") : " $";
+          return r;
         } else {
+          static_assert(std::is_same_v<S, sn::CenterMilling>);
           return "CENTER_MILLING";
         }
       },
