@@ -181,6 +181,7 @@ TEST(Fit, RandomRunsStayInTheBand) {
   std::mt19937 random(14);
   std::uniform_real_distribution<double> u(0, 1);
   int arcs = 0;
+  FitWorkspace shared;  // one workspace through all runs, as the optimizer keeps it
   for (int trial = 0; trial < 300; ++trial) {
     const double tol = trial % 2 ? 0.025 : 0.005;
     std::vector<Vec3> p;
@@ -205,6 +206,15 @@ TEST(Fit, RandomRunsStayInTheBand) {
     o.tolerance = tol;
     o.min_segment = trial % 7 == 0 ? 0.3 : 0;
     const auto moves = fit(v, o);
+    std::vector<FittedMove> again;
+    FitStats stats;
+    fit_polyline(v, o, again, stats, shared);
+    ASSERT_EQ(again.size(), moves.size()) << "trial " << trial << ": a reused workspace fits otherwise";
+    for (std::size_t i = 0; i < moves.size(); ++i) {
+      EXPECT_EQ(again[i].last, moves[i].last);
+      EXPECT_EQ(again[i].arc, moves[i].arc);
+      EXPECT_EQ(again[i].geometry.first_centre, moves[i].geometry.first_centre);
+    }
     for (const auto& m : moves) arcs += m.arc;
     const auto d = measure(v, moves, tol);
     ASSERT_TRUE(d.passed(tol)) << "trial " << trial << ": " << d.input_to_output << " / " << d.output_to_input << " "

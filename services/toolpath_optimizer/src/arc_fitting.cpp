@@ -2,6 +2,7 @@
 // Candidate circles all pass through the first vertex (and the last, unless the run closes on
 // itself); each candidate is checked against the band as fit.hpp describes.
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "ncbridge/toolpath_optimizer/fit.hpp"
@@ -11,17 +12,13 @@ namespace ncbridge::toolpath_optimizer {
 
 namespace {
 
-struct Planar {
-  double u, v, n;  // plane axes relative to the first vertex; normal axis absolute
-};
-
 // Centre of the circle through the origin, b and c (relative coordinates).
-bool circumcentre(Planar b, Planar c, double& cu, double& cv) {
-  const double d = 2 * (b.u * c.v - b.v * c.u);
-  const double b2 = b.u * b.u + b.v * b.v, c2 = c.u * c.u + c.v * c.v;
+bool circumcentre(const PlanePoint& b, const PlanePoint& c, double& cu, double& cv) {
+  const double d = 2 * (b.first * c.second - b.second * c.first);
+  const double b2 = b.first * b.first + b.second * b.second, c2 = c.first * c.first + c.second * c.second;
   if (std::abs(d) <= 1e-12 * (b2 + c2)) return false;
-  cu = (c.v * b2 - b.v * c2) / d;
-  cv = (b.u * c2 - c.u * b2) / d;
+  cu = (c.second * b2 - b.second * c2) / d;
+  cv = (b.first * c2 - c.first * b2) / d;
   return true;
 }
 
@@ -35,79 +32,106 @@ inline double step_angle(double y, double x) {
   return std::atan2(y, x);
 }
 
+// How far an arc of radius 1 between two points strays from the chord between them, compared at
+// equal fractions: sqrt((1 - cos h)^2 + (h - sin h)^2), h = half the angle (fit.hpp). Small
+// angles by the two series (more exact there than the differences, and without libm).
+inline double unit_chord_bound(double half) {
+  double c1, c2;
+  if (std::abs(half) < 0.25) {
+    const double h2 = half * half;
+    c1 = h2 / 2 * (1 - h2 / 12 * (1 - h2 / 30 * (1 - h2 / 56 * (1 - h2 / 90 * (1 - h2 / 132)))));
+    c2 = half * h2 / 6 * (1 - h2 / 20 * (1 - h2 / 42 * (1 - h2 / 72 * (1 - h2 / 110 * (1 - h2 / 156)))));
+  } else {
+    c1 = 1 - std::cos(half);
+    c2 = half - std::sin(half);
+  }
+  return std::sqrt(c1 * c1 + c2 * c2);
+}
+
+// x rounded to the nearest integer (ties away from zero, as std::round), without a libm call
+// for the values centres take.
+inline double round_to_integer(double x) {
+  constexpr double kLarge = 4503599627370496.0;  // 2^52: from here on every double is an integer
+  if (!(std::abs(x) < kLarge)) return x;
+  const double t = static_cast<double>(static_cast<std::int64_t>(x));  // towards zero
+  const double rest = x - t;
+  if (rest >= 0.5) return t + 1;
+  if (rest <= -0.5) return t - 1;
+  return t;
+}
+
+// The candidate circles of one span: `p` are its vertices relative to the first (normal axis
+// absolute), p.size() >= 3.
 class ArcCheck {
  public:
-  ArcCheck(std::span<const FitVertex> v, std::size_t first, std::size_t last, const FitOptions& o)
-      : v_(v), first_(first), last_(last), o_(o) {
-    origin_ = to_plane(v[first].p, o.plane);
-    points_.resize(last - first + 1);
-    for (std::size_t i = first; i <= last; ++i) {
-      const PlanePoint p = to_plane(v[i].p, o.plane);
-      points_[i - first] = {p.first - origin_.first, p.second - origin_.second, p.normal};
-    }
-  }
-  const std::vector<Planar>& points() const { return points_; }
+  ArcCheck(std::span<const PlanePoint> p, PlanePoint origin, const FitOptions& o, FitWorkspace& w)
+      : p_(p), origin_(origin), o_(o), w_(w) {}
   bool closed() const {
-    const Planar& e = points_.back();
-    return std::hypot(e.u, e.v) <= 1e-12;
+    const PlanePoint& e = p_.back();
+    return e.first * e.first + e.second * e.second <= 1e-24;
   }
 
   // Checks the circle with centre (cu, cv) relative to the first vertex, after rounding it.
   bool check(double cu, double cv, ArcGeometry& out) const {
     if (o_.centre_resolution > 0) {
       const double q = o_.centre_resolution;
-      cu = std::round((origin_.first + cu) / q) * q - origin_.first;
-      cv = std::round((origin_.second + cv) / q) * q - origin_.second;
+      cu = round_to_integer((origin_.first + cu) / q) * q - origin_.first;
+      cv = round_to_integer((origin_.second + cv) / q) * q - origin_.second;
     }
     const double r = std::sqrt(cu * cu + cv * cv);
     if (!(r > 0) || r > o_.max_radius || r < o_.min_arc_radius) return false;
     const double tol = o_.tolerance - o_.margin;
-    const std::size_t n = points_.size();
+    const std::size_t n = p_.size();
     // Every vertex within the band of the circle first (a point's distance to any point of the
     // circle is at least |rho - r|): most candidate circles fail here, before any angle.
-    rho_.resize(n);
+    std::vector<double>& rho = w_.rho;
+    rho.resize(n);
     for (std::size_t i = 1; i < n; ++i) {
-      const double qu = points_[i].u - cu, qv = points_[i].v - cv;
-      rho_[i] = std::sqrt(qu * qu + qv * qv);
-      if (std::abs(rho_[i] - r) > tol) return false;
+      const double qu = p_[i].first - cu, qv = p_[i].second - cv;
+      rho[i] = std::sqrt(qu * qu + qv * qv);
+      if (std::abs(rho[i] - r) > tol) return false;
     }
     // Signed turning of each step about the centre.
-    steps_.resize(n);
+    std::vector<double>& steps = w_.steps;
+    steps.resize(n);
     double sum = 0;
     double pu = -cu, pv = -cv;
     for (std::size_t i = 1; i < n; ++i) {
-      const double qu = points_[i].u - cu, qv = points_[i].v - cv;
-      steps_[i] = step_angle(pu * qv - pv * qu, pu * qu + pv * qv);
-      sum += steps_[i];
+      const double qu = p_[i].first - cu, qv = p_[i].second - cv;
+      steps[i] = step_angle(pu * qv - pv * qu, pu * qu + pv * qv);
+      sum += steps[i];
       pu = qu, pv = qv;
     }
     const double dir = sum >= 0 ? 1.0 : -1.0;
     const double total = sum * dir;
     if (total <= 1e-9 || total > 2 * kPi + 1e-9) return false;
-    const double n0 = points_.front().n, n1 = points_.back().n;
+    const double n0 = p_.front().normal, n1 = p_.back().normal;
     if (!o_.helical && std::abs(n1 - n0) > 1e-12) return false;
-    const double a0 = std::atan2(-cv, -cu);
+    double a0 = 0;
+    bool have_a0 = false;  // the start angle, taken only when a vertex is held back
     double raw = 0, tau_prev = 0, e_prev = 0;
     for (std::size_t i = 1; i < n; ++i) {
-      const double step = steps_[i] * dir;
+      const double step = steps[i] * dir;
       if (step < -0.5) return false;  // runs backwards round the centre
       raw += step;
       const double tau = std::min(std::max(tau_prev, raw), total);
       const double hn = n0 + (n1 - n0) * (tau / total);
-      const Planar& p = points_[i];
+      const PlanePoint& q = p_[i];
       double e2;
       if (tau == raw) {
-        const double rho = rho_[i];
-        e2 = (rho - r) * (rho - r) + (p.n - hn) * (p.n - hn);
+        const double rho_i = rho[i];
+        e2 = (rho_i - r) * (rho_i - r) + (q.normal - hn) * (q.normal - hn);
       } else {
+        if (!have_a0) {
+          a0 = std::atan2(-cv, -cu);
+          have_a0 = true;
+        }
         const double a = a0 + dir * tau;
-        const double hu = cu + r * std::cos(a) - p.u, hv = cv + r * std::sin(a) - p.v;
-        e2 = hu * hu + hv * hv + (p.n - hn) * (p.n - hn);
+        const double hu = cu + r * std::cos(a) - q.first, hv = cv + r * std::sin(a) - q.second;
+        e2 = hu * hu + hv * hv + (q.normal - hn) * (q.normal - hn);
       }
       const double e = std::sqrt(e2);
-      const double half = (tau - tau_prev) / 2;
-      const double c1 = 1 - std::cos(half), c2 = half - std::sin(half);
-      const double chord = r * std::sqrt(c1 * c1 + c2 * c2);
+      const double chord = r * unit_chord_bound((tau - tau_prev) / 2);
       if (e > tol || chord + std::max(e, e_prev) > tol) return false;
       tau_prev = tau;
       e_prev = e;
@@ -121,36 +145,45 @@ class ArcCheck {
   }
 
  private:
-  std::span<const FitVertex> v_;
-  std::size_t first_, last_;
-  const FitOptions& o_;
+  std::span<const PlanePoint> p_;
   PlanePoint origin_;
-  std::vector<Planar> points_;
-  mutable std::vector<double> steps_;
-  mutable std::vector<double> rho_;  // each vertex's distance from the centre
+  const FitOptions& o_;
+  FitWorkspace& w_;
 };
 
 }  // namespace
 
 bool arc_fits(std::span<const FitVertex> v, std::size_t first, std::size_t last, const FitOptions& options,
-              ArcGeometry& geometry) {
+              ArcGeometry& geometry, FitWorkspace& w) {
   if (last < first + 2) return false;
-  const ArcCheck check(v, first, last, options);
-  const auto& p = check.points();
+  const PlanePoint origin = to_plane(v[first].p, options.plane);
+  if (!w.valid || w.start != first) {
+    w.points.clear();
+    w.start = first;
+    w.valid = true;
+  }
+  for (std::size_t i = first + w.points.size(); i <= last; ++i) {
+    const PlanePoint q = to_plane(v[i].p, options.plane);
+    w.points.push_back({q.first - origin.first, q.second - origin.second, q.normal});
+  }
+  const std::span<const PlanePoint> p(w.points.data(), last - first + 1);
+  const ArcCheck check(p, origin, options, w);
   const std::size_t n = p.size();
   double cu = 0, cv = 0;
   if (!check.closed()) {
     // The circle through the first, middle and last vertex.
     if (circumcentre(p[n / 2], p[n - 1], cu, cv) && check.check(cu, cv, geometry)) return true;
+    // Three vertices: the least squares circle below is that same circle.
+    if (n == 3) return false;
     // Least squares with the centre on the chord's bisector (through both ends):
     // |p - c|^2 - r^2 is linear in the position t along the bisector.
-    const double mu = p[n - 1].u / 2, mv = p[n - 1].v / 2;
+    const double mu = p[n - 1].first / 2, mv = p[n - 1].second / 2;
     const double h2 = mu * mu + mv * mv;
     const double len = std::sqrt(h2) * 2;
-    const double nu = -p[n - 1].v / len, nv = p[n - 1].u / len;
+    const double nu = -p[n - 1].second / len, nv = p[n - 1].first / len;
     double ab = 0, bb = 0;
     for (std::size_t i = 1; i + 1 < n; ++i) {
-      const double du = p[i].u - mu, dv = p[i].v - mv;
+      const double du = p[i].first - mu, dv = p[i].second - mv;
       const double a = du * du + dv * dv - h2, b = du * nu + dv * nv;
       ab += a * b;
       bb += b * b;
@@ -165,13 +198,19 @@ bool arc_fits(std::span<const FitVertex> v, std::size_t first, std::size_t last,
   // Least squares through the first vertex: |p|^2 - 2 c.p = 0 is linear in c.
   double suu = 0, suv = 0, svv = 0, ru = 0, rv = 0;
   for (std::size_t i = 1; i + 1 < n; ++i) {
-    const double pu = p[i].u, pv = p[i].v, k = (pu * pu + pv * pv) / 2;
+    const double pu = p[i].first, pv = p[i].second, k = (pu * pu + pv * pv) / 2;
     suu += pu * pu, suv += pu * pv, svv += pv * pv;
     ru += pu * k, rv += pv * k;
   }
   const double det = suu * svv - suv * suv;
   if (std::abs(det) <= 1e-18) return false;
   return check.check((ru * svv - rv * suv) / det, (suu * rv - suv * ru) / det, geometry);
+}
+
+bool arc_fits(std::span<const FitVertex> v, std::size_t first, std::size_t last, const FitOptions& options,
+              ArcGeometry& geometry) {
+  FitWorkspace w;
+  return arc_fits(v, first, last, options, geometry, w);
 }
 
 }  // namespace ncbridge::toolpath_optimizer
