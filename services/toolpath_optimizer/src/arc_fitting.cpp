@@ -1,6 +1,7 @@
 // Arc fitting: can one arc (or helix) replace the moves from vertex `first` to `last`?
 // Candidate circles all pass through the first vertex (and the last, unless the run closes on
 // itself); each candidate is checked against the band as fit.hpp describes.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -22,14 +23,32 @@ bool circumcentre(const PlanePoint& b, const PlanePoint& c, double& cu, double& 
   return true;
 }
 
-// atan2(y, x); a short step (|y| < x / 8, nearly every step of a fitted arc) by the series of
-// atan(y / x), to within 1e-12 rad, without libm's general atan2.
+// atan2(y, x) to within a few 1e-16 rad without libm: folded into the first octant, then
+// atan(t) = k/8 + atan(u) with tan(k/8) the nearest tabulated value and |u| <= tan(1/16), whose
+// series converges fast. Every step of every candidate takes one of these.
 inline double step_angle(double y, double x) {
-  if (x > 0 && std::abs(y) < 0.125 * x) {
-    const double t = y / x, t2 = t * t;
-    return t * (1 - t2 * (1.0 / 3 - t2 * (1.0 / 5 - t2 * (1.0 / 7 - t2 * (1.0 / 9 - t2 / 11)))));
-  }
-  return std::atan2(y, x);
+  static constexpr double kTan[7] = {0.0,
+                                     0.12565513657513097,   // tan(1/8)
+                                     0.25534192122103627,   // tan(2/8)
+                                     0.39362657592563277,   // tan(3/8)
+                                     0.54630248984379050,   // tan(4/8)
+                                     0.72148444099090450,   // tan(5/8)
+                                     0.93159645994407250};  // tan(6/8)
+  const double ax = std::abs(x), ay = std::abs(y);
+  const bool swap = ay > ax;
+  const double num = swap ? ax : ay, den = swap ? ay : ax;
+  if (!(den > 0)) return std::atan2(y, x);  // (0, 0), NaN
+  const double t = num / den;                // in [0, 1]
+  // The tabulated tangent nearest t (t * 8 is close to the angle in eighths, then by the table).
+  int j = std::min(6, static_cast<int>(t * 8 + 0.5));
+  while (j < 6 && t > (kTan[j] + kTan[j + 1]) / 2) ++j;
+  while (j > 0 && t < (kTan[j - 1] + kTan[j]) / 2) --j;
+  const double c = kTan[j];
+  const double u = (t - c) / (1 + t * c), u2 = u * u;
+  double a = j / 8.0 + u * (1 - u2 * (1.0 / 3 - u2 * (1.0 / 5 - u2 * (1.0 / 7 - u2 * (1.0 / 9 - u2 * (1.0 / 11 - u2 / 13))))));
+  if (swap) a = kPi / 2 - a;
+  if (x < 0) a = kPi - a;
+  return std::signbit(y) ? -a : a;
 }
 
 // How far an arc of radius 1 between two points strays from the chord between them, compared at
@@ -123,7 +142,7 @@ class ArcCheck {
         e2 = (rho_i - r) * (rho_i - r) + (q.normal - hn) * (q.normal - hn);
       } else {
         if (!have_a0) {
-          a0 = std::atan2(-cv, -cu);
+          a0 = step_angle(-cv, -cu);
           have_a0 = true;
         }
         const double a = a0 + dir * tau;
