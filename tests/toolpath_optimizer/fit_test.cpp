@@ -175,6 +175,28 @@ TEST(Fit, ShortMovesAreFoldedWhereTheBandAllows) {
   EXPECT_EQ(moves.size(), 5u);
 }
 
+TEST(Fit, ANoisyPolygonIsOneArcWhenItsPiecesStayNearTheirSegments) {
+  // 56 segments over a quarter circle of radius 20 (sagitta 0.002 mm), every other vertex 0.004
+  // mm off the circle, out and in. Compared point for point (an arc piece and its segment at
+  // equal fractions) the arc would be off by up to sagitta + 0.004 > 0.005; measured as the
+  // distance of the arc piece to its segment (about sagitta + 0.002 at most) it stays inside
+  // 0.005, and the independent checker agrees.
+  std::vector<Vec3> p;
+  for (int i = 0; i <= 56; ++i) {
+    const double a = kPi / 2 * i / 56, r = 20 + 0.004 * std::sin(i * kPi / 2);
+    p.push_back({r * std::cos(a), r * std::sin(a), 0.2});
+  }
+  const auto v = vertices(p, 0.05);
+  FitOptions o;
+  o.tolerance = 0.005;
+  const auto moves = fit(v, o);
+  ASSERT_EQ(moves.size(), 1u);
+  EXPECT_TRUE(moves[0].arc);
+  const auto d = measure(v, moves, o.tolerance);
+  EXPECT_TRUE(d.passed(o.tolerance)) << d.largest();
+  EXPECT_GT(d.largest(), 0.0039);
+}
+
 TEST(Fit, RandomRunsStayInTheBand) {
   // Noisy circles, spirals, corners and straight stretches at several bands: whatever the fitter
   // makes, the independent checker finds it within the band.

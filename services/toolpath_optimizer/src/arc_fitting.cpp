@@ -79,6 +79,43 @@ inline double round_to_integer(double x) {
   return t;
 }
 
+// The farthest any point of a plane arc piece is from an input segment, at most: the arc runs
+// from a to b (points on the circle of centre c and radius r, turning `dir`, less than a quarter
+// turn) at height `normal`; the segment from P to Q. Along the segment's line and across it,
+// the distance of an arc point is A + r cos(angle - phi): its extremes lie at the piece's ends
+// or where the arc's radius points along (or across) the line. The bound combines the largest
+// distance across the line, how far the piece overshoots the segment's ends along it, and the
+// segment's largest height off the arc's plane. Negative where the segment is a point.
+struct Point2 {
+  double u, v;
+};
+
+inline double piece_bound(Point2 a, Point2 b, Point2 c, double r, double dir, const PlanePoint& P, const PlanePoint& Q,
+                          double normal) {
+  const double du = Q.first - P.first, dv = Q.second - P.second;
+  const double length = std::sqrt(du * du + dv * dv);
+  if (!(length > 1e-12)) return -1;
+  const double tu = du / length, tv = dv / length;  // along the segment
+  const double nu = -tv, nv = tu;                    // across it
+  auto across = [&](Point2 x) { return nu * (x.u - P.first) + nv * (x.v - P.second); };
+  auto along = [&](Point2 x) { return tu * (x.u - P.first) + tv * (x.v - P.second); };
+  double cross_max = std::max(std::abs(across(a)), std::abs(across(b)));
+  double along_min = std::min(along(a), along(b)), along_max = std::max(along(a), along(b));
+  const double au = a.u - c.u, av = a.v - c.v, bu = b.u - c.u, bv = b.v - c.v;
+  // Whether the direction (x, y) from the centre lies on the piece.
+  auto on_piece = [&](double x, double y) {
+    return dir * (au * y - av * x) >= 0 && dir * (x * bv - y * bu) >= 0 && x * (au + bu) + y * (av + bv) > 0;
+  };
+  const double centre_across = across(c), centre_along = along(c);
+  if (on_piece(nu, nv)) cross_max = std::max(cross_max, std::abs(centre_across + r));
+  if (on_piece(-nu, -nv)) cross_max = std::max(cross_max, std::abs(centre_across - r));
+  if (on_piece(tu, tv)) along_max = std::max(along_max, centre_along + r);
+  if (on_piece(-tu, -tv)) along_min = std::min(along_min, centre_along - r);
+  const double over = std::max({0.0, -along_min, along_max - length});
+  const double height = std::max(std::abs(P.normal - normal), std::abs(Q.normal - normal));
+  return std::sqrt(cross_max * cross_max + over * over + height * height);
+}
+
 // The candidate circles of one span: `p` are its vertices relative to the first (normal axis
 // absolute), p.size() >= 3.
 class ArcCheck {
@@ -129,31 +166,58 @@ class ArcCheck {
     double a0 = 0;
     bool have_a0 = false;  // the start angle, taken only when a vertex is held back
     double raw = 0, tau_prev = 0, e_prev = 0;
+    const bool helix = n1 != n0;
+    // The arc ends at the last vertex, which is only within the band of the circle: a control
+    // (and the checker) moves a spiral whose radius goes linearly from r to the last vertex's.
+    const double spiral = rho[n - 1] - r;
+    double mu_prev = 0, mv_prev = 0;  // the circle's point paired with the previous vertex
+    double delta_prev = 0;            // the spiral's radius there, less r
     for (std::size_t i = 1; i < n; ++i) {
       const double step = steps[i] * dir;
       if (step < -0.5) return false;  // runs backwards round the centre
       raw += step;
       const double tau = std::min(std::max(tau_prev, raw), total);
       const double hn = n0 + (n1 - n0) * (tau / total);
+      const double delta = spiral * (tau / total);
       const PlanePoint& q = p_[i];
-      double e2;
-      if (tau == raw) {
+      double e2, mu, mv;
+      if (tau == raw && rho[i] > 1e-12) {
         const double rho_i = rho[i];
-        e2 = (rho_i - r) * (rho_i - r) + (q.normal - hn) * (q.normal - hn);
+        e2 = (rho_i - r - delta) * (rho_i - r - delta) + (q.normal - hn) * (q.normal - hn);
+        mu = cu + (q.first - cu) * (r / rho_i);
+        mv = cv + (q.second - cv) * (r / rho_i);
       } else {
         if (!have_a0) {
           a0 = step_angle(-cv, -cu);
           have_a0 = true;
         }
         const double a = a0 + dir * tau;
-        const double hu = cu + r * std::cos(a) - q.first, hv = cv + r * std::sin(a) - q.second;
+        const double ca = std::cos(a), sa = std::sin(a);
+        mu = cu + r * ca;
+        mv = cv + r * sa;
+        const double hu = mu + delta * ca - q.first, hv = mv + delta * sa - q.second;
         e2 = hu * hu + hv * hv + (q.normal - hn) * (q.normal - hn);
       }
       const double e = std::sqrt(e2);
-      const double chord = r * unit_chord_bound((tau - tau_prev) / 2);
-      if (e > tol || chord + std::max(e, e_prev) > tol) return false;
+      if (e > tol) return false;
+      // The spiral between the two paired points against the input segment between the
+      // vertices: a plane arc exactly (piece_bound on the circle, plus how far the spiral is off
+      // it there), else compared at equal fractions (fit.hpp).
+      double piece = -1;
+      if (!helix && tau - tau_prev < kPi / 2) {
+        piece = piece_bound({mu_prev, mv_prev}, {mu, mv}, {cu, cv}, r, dir, p_[i - 1], q, n0);
+        if (piece >= 0) piece += std::max(std::abs(delta_prev), std::abs(delta));
+      }
+      if (piece < 0) {
+        piece = (r + std::max(std::abs(delta), std::abs(delta_prev))) * unit_chord_bound((tau - tau_prev) / 2) +
+                std::abs(delta - delta_prev) + std::max(e, e_prev);
+      }
+      if (piece > tol) return false;
       tau_prev = tau;
       e_prev = e;
+      mu_prev = mu;
+      mv_prev = mv;
+      delta_prev = delta;
     }
     out.plane = o_.plane;
     out.first_centre = origin_.first + cu;
