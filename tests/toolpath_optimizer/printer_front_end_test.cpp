@@ -139,6 +139,11 @@ TEST(PrinterFrontEnd, BadInputIsLocated) {
   e = error_of("M104 S200\nG1 X1\0 Y2\n"s);
   EXPECT_EQ(e.where().line, 2u);
   EXPECT_NE(e.message().find("binary"), std::string::npos);
+  EXPECT_EQ(e.where().column, 6u);
+  e = error_of("G1\tX1 Y2\x7f\n");  // a tab is fine, DEL is not
+  EXPECT_EQ(e.where().column, 9u);
+  EXPECT_NE(e.message().find("0x7f"), std::string::npos);
+  EXPECT_NO_THROW(read("G1\tX1\tY2 E0.5\r\n;\f caf\xc3\xa9\n"));  // tab, form feed, UTF-8 in a comment
   e = error_of("G2 X1 Y1 E1\n");
   EXPECT_NE(e.message().find("arc without"), std::string::npos);
   e = error_of("G1 X1 Y1 (comment)\n");
