@@ -34,17 +34,17 @@ struct PartProgram {
   // more), or the generator's refusal (a fragment of its message).
   std::optional<double> agreement_pct;
   std::string refused;
-  bool recognition_right = false;  // then the target holds: within 5 %
+  bool within_target = false;  // within 5 % today (the recognition right, or near enough): held there
   double cell = 0;                 // the grid's spacing, mm, where grid_cell's is too slow
 };
 
 const fs::path kRealWorld = fs::path(NCBRIDGE_SHARED_DIR) / "corpus/realworld";
 
-PartProgram real(const std::string& path, const std::string& dialect, std::optional<double> pct, bool right,
+PartProgram real(const std::string& path, const std::string& dialect, std::optional<double> pct, bool within,
                  const std::string& refused = "", double cell = 0) {
   const fs::path program = kRealWorld / path;
   const fs::path stem = program.parent_path() / program.stem();
-  return {program, dialect, stem.string() + ".tools.json", stem.string() + ".stock.json", pct, refused, right, cell};
+  return {program, dialect, stem.string() + ".tools.json", stem.string() + ".stock.json", pct, refused, within, cell};
 }
 
 // BOTTLE.NC and 123.mpf do not convert (realworld_test.cpp), probe_round_pocket.ngc has no
@@ -53,15 +53,15 @@ const std::vector<PartProgram> kPrograms = {
     real("fanuc/FANUC0M.nc", "fanuc", 12.1, false),
     real("fanuc/G83.NC", "fanuc", 0.0, true),
     real("fanuc/PROGRAM2.NC", "fanuc", 89.5, false),
-    real("heidenhain/668.klartext", "heidenhain", std::nullopt, false, "its depth plane is not below its placement"),
+    real("heidenhain/668.klartext", "heidenhain", -7.6, false),
     real("heidenhain/Krivka.klartext", "heidenhain", 95.7, false),
     real("heidenhain/SLII001.klartext", "heidenhain", 23.9, false),
-    real("heidenhain/VESELYparametr.klartext", "heidenhain", std::nullopt, false, "its depth plane is not below its placement"),
+    real("heidenhain/VESELYparametr.klartext", "heidenhain", -1.1, true),
     real("heidenhain/programm-zirkularnut-fraesen.klartext", "heidenhain", -0.4, true),
     real("mach3/bear.nc", "mach3", 0.0, true),
     real("mach3/botomata_bottom.nc", "mach3", 39.7, false),
     real("mach3/scorpion.nc", "mach3", 102.2, false),
-    real("rs274ngc/genes-encoder.ngc", "rs274ngc", std::nullopt, false, "its depth plane is not below its placement"),
+    real("rs274ngc/genes-encoder.ngc", "rs274ngc", std::nullopt, false, "does not fit feature 'POCKET6'"),
     real("rs274ngc/heart.ngc", "rs274ngc", 126.2, false),
     // 110,000 moves of a Ø32 ball end mill over a 1.6 m stock: an 8 mm grid (4 mm takes 10 s)
     real("siemens840d/kanavka_vint_sector.mpf", "siemens840d", 0.0, true, "", 8.0),
@@ -99,7 +99,6 @@ TEST_P(PartTheyMake, GeneratedToolpathsRemoveWhatTheProgramRemoves) {
     EXPECT_NE(std::string(e.what()).find(p.refused), std::string::npos) << e.what();
     return;
   }
-  ASSERT_TRUE(p.refused.empty()) << "generates now: update the table";
   const double cell = p.cell > 0 ? p.cell : grid_cell(r.stock, p.tools);
   const auto a = mc::simulate(mc::program_from_stepnc(r.cc1), r.stock, cell);
   const auto b = mc::simulate(mc::program_from_stepnc(generated.cc1), r.stock, cell);
@@ -110,10 +109,10 @@ TEST_P(PartTheyMake, GeneratedToolpathsRemoveWhatTheProgramRemoves) {
               "differing %.0f mm2\n",
               p.program.filename().c_str(), cell, a.removed_volume, b.removed_volume, pct, d.max_deeper, d.max_shallower,
               d.differing_area);
-  ASSERT_TRUE(p.agreement_pct.has_value());
+  ASSERT_TRUE(p.refused.empty() && p.agreement_pct.has_value()) << "generates now: update the table";
   // today's value, to a tenth of a percent of the removed volume either way
   EXPECT_NEAR(pct, *p.agreement_pct, 0.15) << "changed: update the table here and in docs/recognition.md";
-  if (p.recognition_right) {
+  if (p.within_target) {
     EXPECT_LE(std::abs(pct), 5.0);
   }
 }
