@@ -151,6 +151,9 @@ void split_nested_step_downs(std::vector<MillingGroup>& groups, const std::vecto
 
 Region disk(Point2 c, double diameter, double tolerance) { return Region::polygon(stadium(c, c, diameter / 2, tolerance)); }
 
+// mm: a cut no deeper into the material than this removes nothing.
+constexpr double kAirCut = 1e-6;
+
 struct Pending {
   std::size_t order;
   ClassifiedFeature item;
@@ -226,6 +229,9 @@ std::vector<RecognizedFeature> recognize(const std::vector<ToolpathWorkingstep>&
       const WorkCharge charge(material_budget);
       f.top_z = p.is_hole ? material.height_at(p.hole_at, p.order) : material.top_over(p.item.footprint, f.bottom_z, p.order);
     }
+    // Cut at or above the material (feeds above the stock, a contour at the stock's top): air,
+    // no feature. Its workingsteps stay in the model as the toolpaths they are.
+    if (f.bottom_z >= f.top_z - kAirCut) continue;
     material.add_cut(p.cut, f.bottom_z, p.order);
     out.push_back(std::move(f));
   }
