@@ -2,11 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <queue>
 
 namespace ncbridge::feature_recognizer {
 namespace {
 
 constexpr long long kMaxCellsPerBox = 256;
+
+// Files `id` in an ascending list of unique ids (usually at its end: ids are filed in order).
+void file(std::vector<std::size_t>& ids, std::size_t id) {
+  if (ids.empty() || ids.back() < id) {
+    ids.push_back(id);
+    return;
+  }
+  const auto at = std::lower_bound(ids.begin(), ids.end(), id);
+  if (at == ids.end() || *at != id) ids.insert(at, id);
+}
 
 }  // namespace
 
@@ -27,32 +38,48 @@ bool BoxIndex::cell_range(const Box2& box, Cell& lo, Cell& hi) const {
 void BoxIndex::insert(std::size_t id, const Box2& box) {
   Cell lo, hi;
   if (!cell_range(box, lo, hi)) {
-    wide_.push_back(id);
+    file(wide_, id);
     return;
   }
   for (long long x = lo.first; x <= hi.first; ++x) {
-    for (long long y = lo.second; y <= hi.second; ++y) {
-      auto& ids = cells_[{x, y}];
-      if (ids.empty() || ids.back() != id) ids.push_back(id);
-    }
+    for (long long y = lo.second; y <= hi.second; ++y) file(cells_[{x, y}], id);
   }
 }
 
-std::vector<std::size_t> BoxIndex::candidates(const Box2& box) const {
-  std::vector<std::size_t> out(wide_);
+std::vector<std::size_t> BoxIndex::latest(const Box2& box, std::size_t limit) const {
+  // The lists the box reads, merged from their ends: the highest ids first, each once.
+  std::vector<const std::vector<std::size_t>*> lists{&wide_};
   Cell lo, hi;
   if (!cell_range(box, lo, hi)) {
-    for (const auto& [cell, ids] : cells_) out.insert(out.end(), ids.begin(), ids.end());
+    for (const auto& [cell, ids] : cells_) lists.push_back(&ids);
   } else {
     for (long long x = lo.first; x <= hi.first; ++x) {
       for (long long y = lo.second; y <= hi.second; ++y) {
         auto it = cells_.find({x, y});
-        if (it != cells_.end()) out.insert(out.end(), it->second.begin(), it->second.end());
+        if (it != cells_.end()) lists.push_back(&it->second);
       }
     }
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+  using Head = std::pair<std::size_t, std::size_t>;  // (id, list), the list read down to that id
+  std::priority_queue<Head> heads;
+  std::vector<std::size_t> next(lists.size());
+  for (std::size_t l = 0; l < lists.size(); ++l) {
+    next[l] = lists[l]->size();
+    if (next[l] > 0) heads.push({(*lists[l])[--next[l]], l});
+  }
+  std::vector<std::size_t> out;
+  while (!heads.empty() && out.size() < limit) {
+    const auto [id, l] = heads.top();
+    heads.pop();
+    if (out.empty() || out.back() != id) out.push_back(id);
+    if (next[l] > 0) heads.push({(*lists[l])[--next[l]], l});
+  }
+  return out;
+}
+
+std::vector<std::size_t> BoxIndex::candidates(const Box2& box) const {
+  auto out = latest(box, std::numeric_limits<std::size_t>::max());
+  std::reverse(out.begin(), out.end());
   return out;
 }
 

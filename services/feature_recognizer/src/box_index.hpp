@@ -3,6 +3,7 @@
 // they cover, so a query reads a few cells instead of every box. Large programs recognise
 // thousands of features, and comparing each with every earlier one grew quadratically.
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <utility>
 #include <vector>
@@ -22,12 +23,17 @@ class BoxIndex {
   // and unique: callers still test the boxes themselves.
   std::vector<std::size_t> candidates(const Box2& box) const;
 
+  // The same ids, the highest (the latest filed, for callers that file in machining order)
+  // first, at most `limit` of them: a query over a crowded area reads `limit` ids of each cell it
+  // covers, not every id filed there.
+  std::vector<std::size_t> latest(const Box2& box, std::size_t limit) const;
+
  private:
   using Cell = std::pair<long long, long long>;
   bool cell_range(const Box2& box, Cell& lo, Cell& hi) const;  // false: too many cells
   double cell_;
-  std::map<Cell, std::vector<std::size_t>> cells_;
-  std::vector<std::size_t> wide_;  // boxes over too many cells to file: always candidates
+  std::map<Cell, std::vector<std::size_t>> cells_;  // each ascending and unique
+  std::vector<std::size_t> wide_;  // boxes over too many cells to file: always candidates (ascending, unique)
 };
 
 }  // namespace ncbridge::feature_recognizer
