@@ -1,7 +1,9 @@
 #pragma once
-// Which of many boxes may overlap a given one: boxes are filed in the cells of a uniform grid
+// Which of many boxes may overlap a given one: boxes are filed in the cells of uniform grids
 // they cover, so a query reads a few cells instead of every box. Large programs recognise
-// thousands of features, and comparing each with every earlier one grew quadratically.
+// thousands of features, and comparing each with every earlier one grew quadratically. Grids
+// of cells 1, 4, 16, ... times the cell size: a box is filed in the finest one where it covers
+// at most 2 x 2 cells, so a box over the whole part is in a few cells, not in every one.
 #include <cstddef>
 #include <limits>
 #include <map>
@@ -30,9 +32,10 @@ class BoxIndex {
 
  private:
   using Cell = std::pair<long long, long long>;
-  bool cell_range(const Box2& box, Cell& lo, Cell& hi) const;  // false: too many cells
+  // The cells of grid `level` that `box` covers; false: too many (over `max_cells`).
+  bool cell_range(const Box2& box, std::size_t level, long long max_cells, Cell& lo, Cell& hi) const;
   double cell_;
-  std::map<Cell, std::vector<std::size_t>> cells_;  // each ascending and unique
+  std::vector<std::map<Cell, std::vector<std::size_t>>> levels_;  // cells' ids, each ascending and unique
   std::vector<std::size_t> wide_;  // boxes over too many cells to file: always candidates (ascending, unique)
 };
 

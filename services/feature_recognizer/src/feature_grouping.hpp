@@ -39,7 +39,7 @@ inline constexpr double kIndexCell = 25.0;
 inline constexpr std::size_t kNearFeatureLimit = 16;
 // Those are found among the latest this many near it by box (BoxIndex::latest): over a crowded
 // area (every feature of a program of random moves spans the part) a query reads no more.
-inline constexpr std::size_t kNearCandidateLimit = 256;
+inline constexpr std::size_t kNearCandidateLimit = 128;
 // A crowd: more than kCrowd earlier features near one by box. A real part has a handful near
 // each feature; a crowd is a program of random strokes across the part, where every feature
 // overlaps every other and each exact comparison costs as much as the feature itself. There a
