@@ -56,8 +56,9 @@ bool same_key(const Layer& a, Point2 a_origin, const Layer& b, Point2 b_origin) 
   return ka == kb;
 }
 
-// A layer whose path box overlaps those of more than this many earlier layers of other paths
-// (step-downs repeating one path count once) is in a crowd: no real part cuts one place with so
+// A layer whose path box overlaps those of more than this many of the latest 4 x as many earlier
+// layers of other paths near it, each box at least a quarter of its own (step-downs repeating one
+// path count once; a late profile around many small pockets is no crowd) is in a crowd: no real part cuts one place with so
 // many different paths, a program of random strokes across the part soon does, and there every
 // exact comparison costs as much as the layer itself (docs/recognition.md, "Bounded cost").
 constexpr std::size_t kCrowdedLayers = 128;
@@ -83,8 +84,10 @@ void compute_layer_areas(std::vector<Layer>& layers, double tolerance, WorkBudge
     }
     if (!made) {
       std::size_t crowd = 0;
-      for (auto k : paths_by_box.latest(layer.extent, kCrowdedLayers + 1)) {
-        crowd += boxes_overlap(layers[k].extent, layer.extent) ? 1 : 0;
+      const double size = layer.extent.width() * layer.extent.height();
+      for (auto k : paths_by_box.latest(layer.extent, 4 * kCrowdedLayers)) {
+        const Box2& other = layers[k].extent;
+        crowd += boxes_overlap(other, layer.extent) && other.width() * other.height() >= 0.25 * size ? 1 : 0;
       }
       paths_by_box.insert(i, layer.extent);
       if (crowd > kCrowdedLayers) {
