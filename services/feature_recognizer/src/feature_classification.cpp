@@ -220,12 +220,12 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
   for (auto i : group.layers()) highest = std::max(highest, layers[i].z);
   const auto box = island.bbox();
   std::vector<std::size_t> into;
-  for (auto g : part.groups_by_box.candidates(*box)) {
+  for (auto g : part.groups_by_box.latest(*box, kNearCandidateLimit)) {
     if (g == group_index || groups[g].floor > highest + 1e-3 || !boxes_overlap(box, groups[g].area.bbox())) continue;
     into.push_back(g);
   }
   latest_first(into, groups);
-  if (into.size() > kNearFeatureLimit) into.resize(kNearFeatureLimit);
+  into.resize(std::min(into.size(), near_feature_limit(into.size())));
   // (A groove's island may hold shallower grooves of its own: engraved outlines one in another.)
   bool boss = true;
   Region cut_into;
@@ -249,12 +249,12 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
   Region cleared = outside.minus(part.outline);
   std::vector<std::size_t> around;
   if (const auto outside_box = outside.bbox()) {
-    for (auto g : part.groups_by_box.candidates(*outside_box)) {
+    for (auto g : part.groups_by_box.latest(*outside_box, kNearCandidateLimit)) {
       if (g != group_index && boxes_overlap(outside_box, groups[g].area.bbox())) around.push_back(g);
     }
   }
   latest_first(around, groups);
-  if (around.size() > kNearFeatureLimit) around.resize(kNearFeatureLimit);
+  around.resize(std::min(around.size(), near_feature_limit(around.size())));
   std::sort(around.begin(), around.end());
   for (auto g : around) cleared = cleared.united(outside.intersected(groups[g].area));
   if (cleared.area() < 0.5 * outside.area()) {
@@ -278,14 +278,14 @@ class RemovedBefore {
     if (!near) return;
     near->xmin -= 1, near->ymin -= 1, near->xmax += 1, near->ymax += 1;
     std::vector<std::size_t> earlier;
-    for (auto index : part.groups_by_box.candidates(*near)) {
+    for (auto index : part.groups_by_box.latest(*near, kNearCandidateLimit)) {
       const auto& g = groups[index];
       if (g.sequence < group.sequence && g.floor <= group.floor + 1e-3 && boxes_overlap(near, g.area.bbox())) {
         earlier.push_back(index);
       }
     }
     latest_first(earlier, groups);
-    if (earlier.size() > kNearFeatureLimit) earlier.resize(kNearFeatureLimit);
+    earlier.resize(std::min(earlier.size(), near_feature_limit(earlier.size())));
     std::sort(earlier.begin(), earlier.end());
     for (auto index : earlier) areas_.push_back(groups[index].area);
   }

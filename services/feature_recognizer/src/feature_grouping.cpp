@@ -107,9 +107,10 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
     // A later operation on an earlier feature: same region, not deeper than its floor beyond
     // the finishing allowance.
     bool attached = false;
-    const auto near = fill_boxes[i] ? group_index.candidates(*fill_boxes[i]) : std::vector<std::size_t>{};
+    const auto near = fill_boxes[i] ? group_index.latest(*fill_boxes[i], kNearCandidateLimit) : std::vector<std::size_t>{};
     std::size_t compared = 0;
-    for (auto it = near.rbegin(); it != near.rend() && compared < kNearFeatureLimit && budget.available(); ++it) {
+    const std::size_t compare_limit = near_feature_limit(near.size());
+    for (auto it = near.begin(); it != near.end() && compared < compare_limit && budget.available(); ++it) {
       const std::size_t g = *it;
       auto& group = groups[g];
       if (group.freeform != layer.freeform) continue;
