@@ -5,6 +5,7 @@
 // and no status names is unknown to the services: an error (exit 1). docs/cli.md.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -68,6 +69,9 @@ int run_cancel(const CancelArguments& args) {
        Clock::now() < until;)
     take(std::chrono::milliseconds(50));
 
+  // Known to the services: a status of it before we asked, or a worker's after.
+  std::set<std::string> known_before;
+  for (const auto& [job, stages] : known) known_before.insert(job);
   int failed = 0;
   std::set<std::string> asked;
   for (const std::string& job : args.jobs) {
@@ -113,7 +117,8 @@ int run_cancel(const CancelArguments& args) {
   // No worker answered: the job was asked to stop everywhere, but none had it in hand (between
   // two stages), or the services never heard of it.
   for (const std::string& job : asked) {
-    if (known.contains(job)) {
+    const auto& stages = known[job];
+    if (known_before.contains(job) || std::any_of(stages.begin(), stages.end(), [](const auto& s) { return s.first != bus::kStageClient; })) {
       std::printf("%s: cancelled (no worker had it in hand)\n", job.c_str());
     } else {
       print_error("job " + job + ": the services on DDS domain " + std::to_string(bus.config.domain_id) + " know no such job");

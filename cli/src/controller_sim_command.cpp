@@ -126,7 +126,8 @@ int run_controller_sim(const ControllerSimArguments& args) {
   const service::JobOutcome outcome = watch->wait(timeout);
   if (outcome.error) {
     const wire::JobStatus& e = *outcome.error;
-    print_error(e.where, e.message + " (" + e.stage + ")");
+    if (e.state == wire::JobState::Cancelled) print_error("run " + job_id + " was cancelled");
+    else print_error(e.where, e.message + " (" + e.stage + ")");
     return exit_status::input_error;
   }
   if (!outcome.file) {

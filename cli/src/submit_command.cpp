@@ -160,7 +160,10 @@ const char* state_name(wire::JobState s) {
   return "?";
 }
 
-void print_job_error(const wire::JobStatus& e) { print_error(e.where, e.message + " (" + e.stage + ")"); }
+void print_job_error(const wire::JobStatus& e) {
+  if (e.state == wire::JobState::Cancelled) print_error("job " + e.job_id + " was cancelled");
+  else print_error(e.where, e.message + " (" + e.stage + ")");
+}
 
 // --detach: until the first stage has accepted every job: the worker that owns it has all of its
 // input and says so on the status topic (running, or an error at once). Then the job no longer

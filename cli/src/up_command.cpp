@@ -22,6 +22,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -173,39 +175,46 @@ std::vector<std::string> service_arguments(const UpArguments& args, const std::s
   return argv;
 }
 
-// One line per job that ends, from the status topic: done (the step writer's), the first error,
-// or cancelled.
+// One line per job that ends, from the status topic, with the local time: done (the step
+// writer's), the first error, or cancelled.
 class JobLog {
  public:
   void apply(const wire::JobStatus& s) {
     if (s.job_id.empty() || ended_.contains(s.job_id)) return;
-    const auto now = Clock::now();
-    const auto first = first_seen_.emplace(s.job_id, now).first->second;
-    const double seconds = std::chrono::duration<double>(now - first).count();
-    char line[160];
+    // A client's word (a cancel request) counts for a job a worker has reported on.
+    if (s.stage != bus::kStageClient) seen_.insert(s.job_id);
+    else if (!seen_.contains(s.job_id)) return;
+    std::string what;
     if (s.state == wire::JobState::Done && s.stage == bus::kStageStepWriter) {
-      std::snprintf(line, sizeof line, "%s: done (%.1f s)", s.job_id.c_str(), seconds);
+      what = "done";
     } else if (s.state == wire::JobState::Cancelled) {
-      std::snprintf(line, sizeof line, "%s: cancelled", s.job_id.c_str());
+      what = "cancelled";
     } else if (s.state == wire::JobState::Error) {
-      std::printf("%s: %s\n", s.job_id.c_str(), error_line(s.where, s.message + " (" + s.stage + ")").c_str());
-      end(s.job_id);
-      return;
+      const std::string where = s.where.to_string();
+      what = "error: " + (where.empty() ? "" : where + ": ") + s.message + " (" + s.stage + ")";
     } else {
       return;
     }
-    std::printf("%s\n", line);
-    end(s.job_id);
+    const std::time_t now = std::time(nullptr);
+    std::tm local{};
+    localtime_r(&now, &local);
+    char time[16];
+    std::strftime(time, sizeof time, "%H:%M:%S", &local);
+    std::printf("%s %s: %s\n", time, s.job_id.c_str(), what.c_str());
+    std::fflush(stdout);
+    seen_.erase(s.job_id);
+    ended_.insert(s.job_id);
+    order_.push_back(s.job_id);
+    if (order_.size() > 100'000) {  // bounded on an up that runs for months; a late status of one is harmless
+      ended_.erase(order_.front());
+      order_.pop_front();
+    }
   }
 
  private:
-  void end(const std::string& job_id) {
-    std::fflush(stdout);
-    first_seen_.erase(job_id);
-    ended_.insert(job_id);
-  }
-  std::map<std::string, Clock::time_point> first_seen_;
+  std::set<std::string> seen_;   // jobs a worker reported on, not ended
   std::set<std::string> ended_;
+  std::deque<std::string> order_;
 };
 
 // --detach: the caller waits on `ready` for the line the background `up` writes once its services

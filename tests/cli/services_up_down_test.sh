@@ -3,11 +3,13 @@
 # (no CYCLONEDDS_URI, no NCBRIDGE_DDS_DOMAIN): submit (byte-identical to convert), status,
 # controller-sim with a LinuxCNC tool table (up --live-tool-table); up's log holds one line per
 # job; a second up on its domain is refused; `down` stops it and its services and removes the
-# record; a stale record (its process gone) is ignored and removed.
+# record; SIGTERM stops a foreground up the same way; --domain wins over the record, and with two
+# ups running a command must be told which; a stale record (its process gone) is ignored and removed.
 set -euo pipefail
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$HERE/../integration/lib.sh"
 DOMAIN=$NCBRIDGE_DDS_DOMAIN
+DOMAIN2=$(( (DOMAIN + 1) % 231 ))
 unset NCBRIDGE_DDS_DOMAIN CYCLONEDDS_URI
 export XDG_RUNTIME_DIR="$WORK/run"
 mkdir -m 700 "$XDG_RUNTIME_DIR"
@@ -47,10 +49,25 @@ grep -q "FILE_SCHEMA" "$WORK/run.stp" || fail "controller-sim wrote no Part 21 f
 "$N" status --listen 1 > "$WORK/status.txt"
 grep -q "^workers (DDS domain $DOMAIN)" "$WORK/status.txt" || fail "status did not find the domain: $(cat "$WORK/status.txt")"
 grep -Eq "^  plate-1 .*step_writer:done" "$WORK/status.txt" || fail "status does not list plate-1 done: $(cat "$WORK/status.txt")"
-for _ in $(seq 1 50); do grep -q "^mill1/r1: done" "$LOG" && break; sleep 0.1; done
-[[ $(grep -c "^plate-1: " "$LOG") == 1 ]] || fail "up's log does not hold one line for plate-1: $(cat "$LOG")"
-grep -q "^mill1/r1: done" "$LOG" || fail "up's log has no line for the run: $(cat "$LOG")"
+for _ in $(seq 1 50); do grep -Eq "^[0-9:]{8} mill1/r1: done$" "$LOG" && break; sleep 0.1; done
+[[ $(grep -Ec "^[0-9:]{8} plate-1: done$" "$LOG") == 1 && $(grep -c "plate-1" "$LOG") == 1 ]] || fail "up's log does not hold one line for plate-1: $(cat "$LOG")"
+grep -Eq "^[0-9:]{8} mill1/r1: done$" "$LOG" || fail "up's log has no line for the run: $(cat "$LOG")"
 if grep -q "job plate-1: started" "$LOG"; then fail "up's log holds the services' per-stage lines without -v"; fi
+
+# The user's word wins over the record.
+"$N" status --domain "$DOMAIN2" --listen 0.3 > "$WORK/status_other.txt"
+grep -q "^workers (DDS domain $DOMAIN2)" "$WORK/status_other.txt" || fail "--domain did not win: $(cat "$WORK/status_other.txt")"
+# A second up, in the foreground on another domain: the commands no longer guess which.
+start fg "$N" up --domain "$DOMAIN2"
+for _ in $(seq 1 100); do [[ -f "$XDG_RUNTIME_DIR/ncbridge/up-$DOMAIN2.json" ]] && break; sleep 0.1; done
+[[ -f "$XDG_RUNTIME_DIR/ncbridge/up-$DOMAIN2.json" ]] || fail "the foreground up wrote no record: $(cat "$WORK/fg.log")"
+rc=0
+"$N" status --listen 0.2 > /dev/null 2> "$WORK/several.err" || rc=$?
+[[ $rc == 2 ]] && grep -q "several .ncbridge up. run on this machine (DDS domains" "$WORK/several.err" \
+  || fail "status with two ups: exit $rc, $(cat "$WORK/several.err")"
+kill -TERM "$(service_pid "$STARTED_PID")"
+for _ in $(seq 1 150); do [[ ! -f "$XDG_RUNTIME_DIR/ncbridge/up-$DOMAIN2.json" ]] && break; sleep 0.1; done
+[[ ! -f "$XDG_RUNTIME_DIR/ncbridge/up-$DOMAIN2.json" ]] || fail "the foreground up left its record after SIGTERM"
 
 timeout 60 "$N" down > "$WORK/down.out" 2>&1 || fail "down: $(cat "$WORK/down.out")"
 grep -q "stopped ncbridge up on DDS domain $DOMAIN" "$WORK/down.out" || fail "down said: $(cat "$WORK/down.out")"
