@@ -1,6 +1,7 @@
 // `ncbridge up [--workers N] [--detach]`: a local set of services on this machine (loopback DDS):
 // N workers of each stage as child processes, until SIGTERM, Ctrl-C or `ncbridge down`, which
-// stop them cleanly (SIGTERM, then SIGKILL after a grace period). The services are the
+// stop them cleanly (SIGTERM, then SIGKILL after a grace period); killed, it takes them with it
+// (they get SIGTERM when it dies). The services are the
 // ncbridge-* executables beside this one. The bus is --cyclonedds-config's, else CYCLONEDDS_URI's,
 // else a loopback configuration with a 1 s lease. Once every stage's workers are live, `up`
 // records where it runs (up_registry.hpp), so the other commands of this user find it without
@@ -11,7 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -105,17 +106,21 @@ pid_t spawn(const std::vector<std::string>& args, const std::vector<std::string>
   argv.push_back(nullptr);
   for (std::string& e : env_store) envp.push_back(e.data());
   envp.push_back(nullptr);
-  // The children must not inherit our blocked SIGTERM/SIGINT mask.
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  sigset_t none;
-  sigemptyset(&none);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, argv[0], nullptr, &attr, argv.data(), envp.data());
-  posix_spawnattr_destroy(&attr);
-  if (rc != 0) throw std::runtime_error("cannot start " + args[0] + ": " + std::strerror(rc));
+  // The child: our blocked SIGTERM/SIGINT mask lifted, and SIGTERM when this process dies
+  // (killed with SIGKILL, it could not stop its services otherwise). Nothing allocated after fork.
+  if (access(argv[0], X_OK) != 0) throw std::runtime_error("cannot start " + args[0] + ": " + std::strerror(errno));
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("cannot start " + args[0] + ": " + std::strerror(errno));
+  if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(1);  // died already
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    execve(argv[0], argv.data(), envp.data());
+    _exit(127);
+  }
   return pid;
 }
 

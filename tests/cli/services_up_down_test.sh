@@ -3,7 +3,7 @@
 # (no CYCLONEDDS_URI, no NCBRIDGE_DDS_DOMAIN): submit (byte-identical to convert), status,
 # controller-sim with a LinuxCNC tool table (up --live-tool-table); up's log holds one line per
 # job; a second up on its domain is refused; `down` stops it and its services and removes the
-# record; SIGTERM stops a foreground up the same way; --domain wins over the record, and with two
+# record; a foreground up killed (SIGKILL) takes its services with it; --domain wins over the record, and with two
 # ups running a command must be told which; a stale record (its process gone) is ignored and removed.
 set -euo pipefail
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -65,9 +65,18 @@ rc=0
 "$N" status --listen 0.2 > /dev/null 2> "$WORK/several.err" || rc=$?
 [[ $rc == 2 ]] && grep -q "several .ncbridge up. run on this machine (DDS domains" "$WORK/several.err" \
   || fail "status with two ups: exit $rc, $(cat "$WORK/several.err")"
-kill -TERM "$(service_pid "$STARTED_PID")"
-for _ in $(seq 1 150); do [[ ! -f "$XDG_RUNTIME_DIR/ncbridge/up-$DOMAIN2.json" ]] && break; sleep 0.1; done
-[[ ! -f "$XDG_RUNTIME_DIR/ncbridge/up-$DOMAIN2.json" ]] || fail "the foreground up left its record after SIGTERM"
+# Killed (SIGKILL): its services follow it, its record is stale: ignored, then removed.
+FG=$(service_pid "$STARTED_PID")
+FG_SERVICES=$(pgrep -P "$FG" | tr '\n' ' ')
+[[ $(wc -w <<<"$FG_SERVICES") == 4 ]] || fail "the foreground up runs $(wc -w <<<"$FG_SERVICES") services, not 4"
+kill -KILL "$FG"
+for pid in $FG_SERVICES; do
+  for _ in $(seq 1 100); do alive "$pid" || break; sleep 0.1; done
+  ! alive "$pid" || fail "service $pid still runs 10 s after its up was killed"
+done
+"$N" status --listen 0.2 > "$WORK/after_kill.txt" 2>&1 || fail "status after an up was killed: $(cat "$WORK/after_kill.txt")"
+grep -q "^workers (DDS domain $DOMAIN)" "$WORK/after_kill.txt" || fail "status did not take the live up: $(cat "$WORK/after_kill.txt")"
+[[ ! -f "$XDG_RUNTIME_DIR/ncbridge/up-$DOMAIN2.json" ]] || fail "the killed up's record was not removed"
 
 timeout 60 "$N" down > "$WORK/down.out" 2>&1 || fail "down: $(cat "$WORK/down.out")"
 grep -q "stopped ncbridge up on DDS domain $DOMAIN" "$WORK/down.out" || fail "down said: $(cat "$WORK/down.out")"
