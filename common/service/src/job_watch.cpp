@@ -43,7 +43,7 @@ std::set<std::string> JobWatch::wait_all(std::chrono::milliseconds timeout, cons
       if (!r.has_data || !pending_.contains(r.envelope.key)) continue;
       const wire::JobStatus s = wire::decode_status(r.envelope.payload);
       if (on_status) on_status(s);
-      if (s.state == wire::JobState::Error) {
+      if (s.state == wire::JobState::Error || s.state == wire::JobState::Cancelled) {
         pending_.erase(r.envelope.key);
         JobOutcome o;
         o.error = s;

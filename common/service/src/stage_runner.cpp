@@ -136,7 +136,8 @@ struct StageRunner::State {
   }
 
   static bool ends_job(const wire::JobStatus& s) {
-    return s.state == wire::JobState::Error || (s.state == wire::JobState::Done && s.stage == bus::kStageStepWriter);
+    return s.state == wire::JobState::Error || s.state == wire::JobState::Cancelled ||
+           (s.state == wire::JobState::Done && s.stage == bus::kStageStepWriter);
   }
 
   void health(const std::string& message) {
@@ -171,6 +172,10 @@ struct StageRunner::State {
         spdlog::warn("ignoring a malformed status sample of job {}: {}", r.envelope.key, e.what());
         continue;
       }
+      if (s.state == wire::JobState::Cancelled) {
+        cancel(r.envelope.key, s);
+        continue;
+      }
       if (ends_job(s)) job_over(r.envelope.key);
       if (s.state == wire::JobState::Delivered) release_results(r.envelope.key);
     }
@@ -201,6 +206,26 @@ struct StageRunner::State {
       kept_jobs.push_back(std::move(kept));
       if (was_delivered) release(kept_jobs.back());
     }
+  }
+
+  // `ncbridge cancel` (a Cancelled status of stage "client"): the job is over here too, and the
+  // worker that had it (started, or owns its input) says Cancelled in its stage, so `status`
+  // shows it after the cancelling client is gone. A job over already stays as it ended. A job
+  // running here stops between two of its input samples; work on one sample is not interrupted
+  // (a whole-input stage's job then ends at the next stage).
+  void cancel(const std::string& job_id, const wire::JobStatus& request) {
+    if (assembler.finished(job_id)) return;
+    const bool had = started.contains(job_id) ||
+                     (assembler.known(job_id) && directory.tracker().owns(spec.stage, me(), job_id));
+    if (had && request.stage == bus::kStageClient) {
+      spdlog::info("job {}: cancelled", job_id);
+      wire::JobStatus cancelled;
+      cancelled.job_id = job_id;
+      cancelled.state = wire::JobState::Cancelled;
+      cancelled.message = request.message.empty() ? "cancelled" : request.message;
+      publish_status(std::move(cancelled));
+    }
+    job_over(job_id);
   }
 
   // A client has the job's whole file: the results kept for it leave the bus now (each reader
