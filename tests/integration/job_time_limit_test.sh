@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Job time limit: with `ncbridge up --max-job-seconds 2`, a CC2 job whose recognition takes
-# longer (40,000 lines of random long cuts at random depths) is stopped with an ERROR status
+# longer (200,000 lines of random long cuts at random depths: about 4 s of CPU in a release
+# build, well over the limit however fast recognition gets) is stopped with an ERROR status
 # naming it, leaves no file, and every service goes on: the next job converts as
 # `ncbridge convert` converts it.
 source "$(dirname "$0")/lib.sh"
@@ -11,7 +12,7 @@ wait_workers 1
 
 # Random strokes of a 6 mm end mill across a 200 x 150 plate, a new depth every 20 lines.
 awk 'BEGIN { srand(7); print "G21 G90 G17 G94 G54"; print "T1 M6"; print "S6000 M3"; print "G0 X0 Y0 Z5";
-             for (i = 0; i < 40000; i++) {
+             for (i = 0; i < 200000; i++) {
                if (i % 20 == 0) { printf "G0 Z5\nG1 Z-%.3f F300\n", 0.5 + 9 * rand(); i += 2 }
                printf "G1 X%.3f Y%.3f F1200\n", 200 * rand(), 150 * rand() }
              print "G0 Z10"; print "M5"; print "M30" }' > "$WORK/slow.ngc"
