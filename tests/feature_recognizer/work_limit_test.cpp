@@ -106,6 +106,21 @@ TEST(WorkLimit, WithoutALimitNothingIsApproximate) {
   expect_every_workingstep_once(features, program.size());
 }
 
+// Hundreds of levels of random strokes across the plate: past 128 earlier paths of its size
+// around it a layer is in a crowd and coarse, with no work limit at all; the first ones are exact,
+// and every workingstep is still in exactly one operation.
+TEST(WorkLimit, LayersInACrowdOfOtherPathsAreCoarseWithoutALimit) {
+  const auto program = random_strokes(200);
+  fr::Options unlimited;
+  unlimited.work_per_point = 0;
+  const auto features = fr::recognize(program, plate(), unlimited);
+  std::size_t approximate = 0;
+  for (const auto& f : features) approximate += f.approximate ? 1 : 0;
+  EXPECT_GT(approximate, 0u);
+  EXPECT_FALSE(features.front().approximate);
+  expect_every_workingstep_once(features, program.size());
+}
+
 TEST(WorkLimit, TheCorpusIsRecognisedWithinTheDefaultLimit) {
   for (const auto& c : ts::recognition_corpus(NCBRIDGE_SOURCE_DIR, NCBRIDGE_SHARED_DIR)) {
     for (const auto& f : ts::recognize_case(c)) EXPECT_FALSE(f.approximate) << c.name;

@@ -50,7 +50,7 @@ void BoxIndex::insert(std::size_t id, const Box2& box) {
   file(wide_, id);
 }
 
-std::vector<std::size_t> BoxIndex::latest(const Box2& box, std::size_t limit) const {
+void BoxIndex::visit_latest(const Box2& box, const std::function<bool(std::size_t)>& visit) const {
   // The lists the box reads, merged from their ends: the highest ids first, each once.
   std::vector<const std::vector<std::size_t>*> lists{&wide_};
   for (std::size_t level = 0; level < levels_.size(); ++level) {
@@ -74,13 +74,26 @@ std::vector<std::size_t> BoxIndex::latest(const Box2& box, std::size_t limit) co
     next[l] = lists[l]->size();
     if (next[l] > 0) heads.push({(*lists[l])[--next[l]], l});
   }
-  std::vector<std::size_t> out;
-  while (!heads.empty() && out.size() < limit) {
+  bool any = false;
+  std::size_t last = 0;
+  while (!heads.empty()) {
     const auto [id, l] = heads.top();
     heads.pop();
-    if (out.empty() || out.back() != id) out.push_back(id);
+    if (!any || last != id) {
+      any = true, last = id;
+      if (!visit(id)) return;
+    }
     if (next[l] > 0) heads.push({(*lists[l])[--next[l]], l});
   }
+}
+
+std::vector<std::size_t> BoxIndex::latest(const Box2& box, std::size_t limit) const {
+  std::vector<std::size_t> out;
+  if (limit == 0) return out;
+  visit_latest(box, [&](std::size_t id) {
+    out.push_back(id);
+    return out.size() < limit;
+  });
   return out;
 }
 

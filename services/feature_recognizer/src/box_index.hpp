@@ -5,6 +5,7 @@
 // of cells 1, 4, 16, ... times the cell size: a box is filed in the finest one where it covers
 // at most 2 x 2 cells, so a box over the whole part is in a few cells, not in every one.
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <map>
 #include <utility>
@@ -29,6 +30,8 @@ class BoxIndex {
   // first, at most `limit` of them: a query over a crowded area reads `limit` ids of each cell it
   // covers, not every id filed there.
   std::vector<std::size_t> latest(const Box2& box, std::size_t limit) const;
+  // Visits those ids, the highest first, until `visit` returns false.
+  void visit_latest(const Box2& box, const std::function<bool(std::size_t)>& visit) const;
 
  private:
   using Cell = std::pair<long long, long long>;

@@ -83,12 +83,13 @@ void compute_layer_areas(std::vector<Layer>& layers, double tolerance, WorkBudge
       if (same_key(layers[it->second], path_origin(layers[it->second]), layer, origin)) made = it->second;
     }
     if (!made) {
-      std::size_t crowd = 0;
+      std::size_t crowd = 0, read = 0;
       const double size = layer.extent.width() * layer.extent.height();
-      for (auto k : paths_by_box.latest(layer.extent, 4 * kCrowdedLayers)) {
+      paths_by_box.visit_latest(layer.extent, [&](std::size_t k) {
         const Box2& other = layers[k].extent;
         crowd += boxes_overlap(other, layer.extent) && other.width() * other.height() >= 0.25 * size ? 1 : 0;
-      }
+        return crowd <= kCrowdedLayers && ++read < 4 * kCrowdedLayers;
+      });
       paths_by_box.insert(i, layer.extent);
       if (crowd > kCrowdedLayers) {
         layer.coarse = true;
