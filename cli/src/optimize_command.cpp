@@ -52,6 +52,7 @@ struct OptimizeArguments {
   bool loops = false;
   bool no_arcs = false;
   bool no_helical = false;
+  bool no_travel_arcs = false;
   bool no_check = false;
   int krl_base = 1;
   int krl_tool = 1;
@@ -196,6 +197,7 @@ int run_optimize(const OptimizeArguments& args, Verbosity verbosity) {
   request.optimizer.extrusion_rate_variance = args.extrusion_variance;
   request.optimizer.arcs = !args.no_arcs;
   request.optimizer.helical = !args.no_helical;
+  request.optimizer.travel_arcs = !args.no_travel_arcs;
   read_kinds(args, request, feedback);
 
   OutputSet outputs;
@@ -273,6 +275,8 @@ void add_optimize_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--loops", args->loops, "Write repeated layers once, as a loop (KRL FOR, the dialect's repeat)");
   cmd->add_flag("--no-arcs", args->no_arcs, "Merge lines only");
   cmd->add_flag("--no-helical", args->no_helical, "Only arcs whose normal axis stays put");
+  cmd->add_flag("--no-travel-arcs", args->no_travel_arcs,
+                "No arcs for moves that do not extrude (printer G0 runs and G1 without E)");
   cmd->add_flag("--no-check", args->no_check, "Skip reading the output back through the deviation checker");
   cmd->add_option("--tools", args->tools, "Tool list of a CNC program (JSON or YAML, docs/formats/tools.md)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");

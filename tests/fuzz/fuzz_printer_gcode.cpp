@@ -1,6 +1,6 @@
 // libFuzzer target: 3D-printer G-code through the toolpath optimizer's printer front-end, the
 // optimizer and the printer writer; what is written is read back. The first byte picks the
-// flavour. Input must be read or refused with an InputError, never crash; the written output
+// flavour and whether G0 runs may become arcs. Input must be read or refused with an InputError, never crash; the written output
 // must read back without an error.
 #include <cstdint>
 #include <string>
@@ -21,6 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     opt::PrinterWriter writer([&](std::string_view chunk) { written.append(chunk); });
     opt::OptimizerOptions options;
+    options.traverse_arcs = (data[0] / 3) % 2 == 1;
     opt::Optimizer optimizer(options, writer);
     opt::PrinterReader reader("fuzz.gcode", flavor, optimizer);
     reader.text(input);

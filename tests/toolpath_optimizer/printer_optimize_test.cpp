@@ -121,3 +121,32 @@ TEST(PrinterOptimize, LinesOnlyAndMinSegment) {
 
 }  // namespace
 }  // namespace ncbridge::toolpath_optimizer
+
+namespace ncbridge::toolpath_optimizer {
+namespace {
+
+// A travel of G0 moves round a polygon (a slicer avoiding a printed part): on a printer G0 is a
+// move at the feed in force, so with traverse arcs the run is one G2/G3 at that feed (the F in force, as the G0 lines had it), and never
+// one move across the travel and the extrusion before it.
+TEST(PrinterOptimize, APrinterTravelOfG0MovesBecomesAnArcWhenAsked) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(3);
+  s << "G21\nG90\nM83\nG1 X60 Y50 Z0.2 F1800\nG1 X61 Y50 E0.05\nG0 F6000 X60 Y50\n";
+  for (int i = 1; i <= 36; ++i) {
+    const double a = kPi * i / 36;
+    s << "G0 X" << 50 + 10 * std::cos(a) << " Y" << 50 + 10 * std::sin(a) << "\n";
+  }
+  s << "G1 X41 Y50 E0.05\n";
+  OptimizerOptions o;
+  auto run = optimize_printer_text(s.str(), o);
+  EXPECT_EQ(run.stats.arcs, 0u) << run.output;  // G0 stays G0 unless asked
+  o.traverse_arcs = true;
+  run = optimize_printer_text(s.str(), o);
+  EXPECT_TRUE(run.deviation.passed(o.tolerance_mm)) << run.deviation.largest();
+  EXPECT_EQ(run.stats.arcs, 1u) << run.output;
+  EXPECT_NE(run.output.find("\nG0 F6000 X60 Y50\nG3 X40 Y50 I-10 J0\nG1 X41 Y50 E0.05\n"), std::string::npos) << run.output;
+}
+
+}  // namespace
+}  // namespace ncbridge::toolpath_optimizer

@@ -106,7 +106,9 @@ void Optimizer::flush() {
   fit.tolerance = options_.tolerance_mm * unit;
   fit.margin = options_.margin_mm * unit;
   fit.min_segment = options_.min_segment_mm * unit;
-  fit.arcs = options_.arcs && first.kind == MotionKind::Line && (options_.travel_arcs || first.extrusion > 0) &&
+  fit.arcs = options_.arcs &&
+             (first.kind == MotionKind::Line || (first.kind == MotionKind::Traverse && options_.traverse_arcs)) &&
+             (options_.travel_arcs || first.extrusion > 0) &&
              (!options_.xy_arcs_only || first.arc.plane == canonical::Plane::XY);
   fit.helical = options_.helical;
   fit.max_radius = options_.max_radius_mm * unit;

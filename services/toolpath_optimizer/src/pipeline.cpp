@@ -133,6 +133,8 @@ OptimizeResult optimize(const OptimizeRequest& request, const OutputSinks& outpu
     optimizer_options.xy_arcs_only = request.writer.dialect == gcode_writer::Dialect::Heidenhain;
     loop_options.motions_and_feeds_only = true;
   }
+  // Printer G-code out: a run of G0 travel may become a G2/G3 at the same feed.
+  optimizer_options.traverse_arcs = !cnc && request.output == OutputFormat::PrinterGcode && optimizer_options.travel_arcs;
   if (krl) {
     // CIRC is a plane circle through an auxiliary point written with krl.decimals.
     optimizer_options.helical = false;

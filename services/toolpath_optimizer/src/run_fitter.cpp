@@ -45,7 +45,7 @@ std::size_t extend(std::size_t first, std::size_t begin, std::size_t n, std::siz
       best = k;
       misses = 0;
       if (k == n - 1) break;
-      if (k - first >= 32) step = std::min<std::size_t>(step * 2, 1024);
+      if (k - first >= 16) step = std::min<std::size_t>(step * 2, 1024);
       k = std::min(k + step, n - 1);
       continue;
     }

@@ -4,12 +4,16 @@
 // full circle), and short moves folded into their neighbours.
 //
 // The band is guaranteed by construction. Each fitted move starts and ends at input vertices.
-// For each input vertex the fitter picks a point of the fitted move, in order along it; between
-// two vertices the input segment and the fitted piece are compared point for point (the same
-// fraction of each), which bounds the distance both ways: every input point is within the
-// tolerance of the output and every output point within the tolerance of the input. For a line
-// the bound is the larger vertex distance; for an arc of radius r it adds
-// r * sqrt((1 - cos a)^2 + (a - sin a)^2), a = half the angle between the two vertices.
+// For each input vertex the fitter picks a point of the fitted move, in order along it, within
+// the tolerance of the vertex (every input vertex is within the band of the output). Between two
+// vertices the piece of the fitted move between their points must lie within the tolerance of
+// the input segment between them (every output point is within the band of the input
+// polyline): for a line and for a helix the two are compared point for point (the same fraction
+// of each), which bounds it by the larger vertex distance plus, for an arc of radius r,
+// r * sqrt((1 - cos a)^2 + (a - sin a)^2), a = half the angle between the two points; for a plane
+// arc the piece's largest distance from the segment is taken from the circle's extremes
+// (across the segment's line, past its ends). An arc whose end vertex is off its circle is the
+// spiral a control moves (the radius changing linearly to the end's), and is measured as that.
 // Arc centres are rounded to the resolution they are written with before they are checked.
 #include <cstddef>
 #include <cstdint>

@@ -24,6 +24,9 @@ struct OptimizerOptions {
   bool arcs = true;
   bool helical = true;
   bool travel_arcs = true;           // arcs for moves that do not extrude (G1 without E)
+  // Arcs for runs of G0 too: printer firmware moves G0 like G1, at the feed in force (Marlin
+  // built with a separate G0 feed rate aside); never on a CNC, where G0 is a rapid.
+  bool traverse_arcs = false;
   bool xy_arcs_only = false;         // no arcs fitted in the XZ and YZ planes
   double max_radius_mm = 10000;
   double min_arc_radius_mm = 0;
