@@ -3,6 +3,8 @@
 // M functions, `~` continuation, comma decimals, FN 18, cycle 32; errors and warnings located.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <algorithm>
 #include <array>
 #include <set>
@@ -313,10 +315,36 @@ TEST(FanucMacroB, WorkOffsetSettingAndTheExternalOffset) {
   ASSERT_TRUE(g55.has_value());
   EXPECT_NEAR(g55->offset.x, 15.0, 1e-9);  // G91: 10 + 5
   EXPECT_NEAR(g55->offset.y, 20.0, 1e-9);
-  const InputError e = error_of("G21\nG10 L2 P0 X5.\nM30\n", options_for(Dialect::Fanuc));
+}
+
+// G10 L2 P0 sets the external work offset (EXOFS), which Fanuc adds to every work offset:
+// G54-G59 set before or after it, and the additional ones (G54.1); in G91 it is added to.
+TEST(FanucMacroB, ExternalWorkOffsetShiftsEveryWorkOffset) {
+  const Collect c = run("G21 G90\nG10 L2 P1 X10. Y20.\nG10 L2 P0 X5. Y-2.\nG10 L2 P2 X100.\nG91 G10 L2 P0 X1. Z-3.\n"
+                        "G90 G10 L20 P3 X200.\nG54 G0 X0 Y0\nG55 X0 Y0\nG54.1 P3 X0 Y0\nM30\n",
+                        options_for(Dialect::Fanuc));
+  std::map<int, std::vector<canonical::SetG5xOffset>> by_system;
+  for (const auto& o : c.all<canonical::SetG5xOffset>()) by_system[o.index].push_back(o);
+  ASSERT_FALSE(by_system[1].empty());
+  ASSERT_FALSE(by_system[2].empty());
+  ASSERT_FALSE(by_system[9].empty());
+  // the offsets in force when each is selected (before M30)
+  auto selected = [&](int system) {
+    for (auto it = by_system[system].rbegin(); it != by_system[system].rend(); ++it) {
+      if (it->offset.x != 0 || it->offset.y != 0 || it->offset.z != 0) return *it;
+    }
+    return by_system[system].back();
+  };
+  EXPECT_NEAR(selected(1).offset.x, 16.0, 1e-9);  // 10 + EXOFS 5 + 1
+  EXPECT_NEAR(selected(1).offset.y, 18.0, 1e-9);  // 20 - 2
+  EXPECT_NEAR(selected(1).offset.z, -3.0, 1e-9);
+  EXPECT_NEAR(selected(2).offset.x, 106.0, 1e-9);  // set after EXOFS: 100 + 5, then + 1
+  EXPECT_NEAR(selected(2).offset.y, -2.0, 1e-9);
+  EXPECT_NEAR(selected(9).offset.x, 206.0, 1e-9);  // G54.1 P3: 200 + 6
+  EXPECT_NEAR(selected(9).offset.z, -3.0, 1e-9);
+  const InputError e = error_of("G21\nG10 L2 P0 B5.\nM30\n", options_for(Dialect::Fanuc));
   EXPECT_EQ(e.where().line, 2u);
-  EXPECT_EQ(e.where().column, 11u);
-  EXPECT_NE(e.message().find("external work offset"), std::string::npos) << e.message();
+  EXPECT_NE(e.message().find("external work offset of a rotary axis"), std::string::npos) << e.message();
 }
 
 TEST(FanucMacroB, MachineFunctionsWarnAndStrictRefuses) {

@@ -144,6 +144,9 @@ class Runner {
   };
   std::vector<SavedLocals> saved_locals_;
   std::map<int, Point3> extended_offsets_;  // G10 L20 Pn: G54.1 Pn, in mm
+  // G10 L2 P0: the external work offset (EXOFS), in mm. Fanuc adds it to every work offset
+  // (G54-G59, G54.1); the G54-G59 offsets handed on below hold the sum.
+  Point3 external_offset_;
   bool rigid_tapping_ = false;              // M29 given: the next G84/G74 is rigid
   bool tool_changes_seen_ = false;          // an M6 was programmed (else tools are loaded by hand)
   DialectMachine m_;
@@ -559,7 +562,8 @@ bool Runner::run_block() {
       if (!w.count('p')) m_.fail(g.column, "G54.1 needs P (the additional work offset, 1-48)");
       const long n = std::lround(w['p'].v);
       if (n < 1 || n > 48) m_.fail(w['p'].column, "G54.1 P must be 1-48");
-      const Point3 o = extended_offsets_[static_cast<int>(n)];
+      Point3 o = extended_offsets_[static_cast<int>(n)];
+      o.x += external_offset_.x, o.y += external_offset_.y, o.z += external_offset_.z;
       const double k = m_.state().mm_per_unit();
       NeutralBlock load;
       load.g(10, g.column);
@@ -838,11 +842,34 @@ void Runner::data_setting(NeutralBlock& nb, std::map<char, Value>& w, std::uint3
   const double k = m_.state().mm_per_unit();
   if (l == 2) {
     // P1-P6: G54-G59; in G91 the values are added to the offset's present value
+    // the parameter store holds offsets in inches (rs274's machine unit)
+    auto present = [&](int system, int axis) {
+      const double v = m_.parameters().numbered(5201 + 20 * system + axis);
+      return axis < 3 ? v * 25.4 / k : v;
+    };
+    const char* axes = "xyzabc";
     if (p == 0) {
-      for (char a : {'x', 'y', 'z'}) {
-        if (w.count(a) && w[a].v != 0) {
-          m_.fail(w[a].column, "G10 L2 P0 sets the external work offset (EXOFS), which shifts every work offset: not supported");
+      // EXOFS: every work offset moves by its change (in G91 the values are added to it)
+      for (char a : {'a', 'b', 'c'}) {
+        if (w.count(a) && w[a].v != 0) m_.fail(w[a].column, "G10 L2 P0: an external work offset of a rotary axis is not supported");
+      }
+      Point3 next = external_offset_;
+      double* coordinate[3] = {&next.x, &next.y, &next.z};
+      for (int i = 0; i < 3; ++i) {
+        if (w.count(axes[i])) *coordinate[i] = (incremental_ ? *coordinate[i] : 0.0) + w[axes[i]].v * k;
+      }
+      const double change[3] = {next.x - external_offset_.x, next.y - external_offset_.y, next.z - external_offset_.z};
+      external_offset_ = next;
+      if (change[0] == 0 && change[1] == 0 && change[2] == 0) return;
+      for (int system = 1; system <= 6; ++system) {
+        NeutralBlock shift;
+        shift.g(10, column);
+        shift.add('l', 2, lc);
+        shift.add('p', static_cast<double>(system), pc);
+        for (int i = 0; i < 3; ++i) {
+          if (change[i] != 0) shift.add(axes[i], present(system, i) + change[i] / k, column);
         }
+        m_.execute(shift);
       }
       return;
     }
@@ -850,15 +877,15 @@ void Runner::data_setting(NeutralBlock& nb, std::map<char, Value>& w, std::uint3
     nb.g(10, column);
     nb.add('l', 2, lc);
     nb.add('p', static_cast<double>(p), pc);
-    const char* axes = "xyzabc";
+    const double external[3] = {external_offset_.x, external_offset_.y, external_offset_.z};
     for (int i = 0; i < 6; ++i) {
       const char a = axes[i];
       if (!w.count(a)) continue;
       double v = w[a].v;
       if (incremental_) {
-        // the parameter store holds offsets in inches (rs274's machine unit)
-        const double present = m_.parameters().numbered(5201 + 20 * static_cast<int>(p) + i);
-        v += i < 3 ? present * 25.4 / k : present;
+        v += present(static_cast<int>(p), i);
+      } else if (i < 3) {
+        v += external[i] / k;  // the offset set, plus EXOFS
       }
       nb.add(a, v, w[a].column);
     }
