@@ -167,3 +167,22 @@ TEST(MillingStrategy, OneLoopWithASplitSideIsAContour) {
   const auto s = only_layer(b);
   EXPECT_EQ(s.strategy, fr::Strategy::Contour);
 }
+
+// The generator's milled hole: a helix down to the level at the smallest radius, then flat
+// circles from the middle out. The helix is the entry: contour parallel about one centre, still
+// helical for the feature (a hole, not a circular pocket).
+TEST(MillingStrategy, HelixEntryThenFlatCirclesIsContourParallel) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 6)).rapid(52, 50, 5).feed(52, 50, 0);
+  for (double z = 0; z > -3 + 1e-9; z -= 1.5) b.arc(48, 50, z - 0.75, 50, 50, false).arc(52, 50, z - 1.5, 50, 50, false);
+  for (double r : {2.0, 5.0, 8.0}) {
+    b.feed(50 + r, 50, -3).arc(50 - r, 50, -3, 50, 50, false).arc(50 + r, 50, -3, 50, 50, false);
+  }
+  const auto layers = layers_of(b);
+  ASSERT_FALSE(layers.empty());
+  const auto deepest = std::min_element(layers.begin(), layers.end(), [](const auto& a, const auto& c) { return a.z < c.z; });
+  const auto s = fr::analyse_strategy(*deepest);
+  EXPECT_EQ(s.strategy, fr::Strategy::ContourParallel);
+  EXPECT_TRUE(s.helical);
+  EXPECT_EQ(s.circle_radii.size(), 3u);
+}
