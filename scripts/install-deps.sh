@@ -29,6 +29,8 @@ if [[ "${1:-}" == "--tests" ]]; then
   packages+=(linuxcnc-uspace chromium)
   # The install test: bash completion run as bash runs it, the man page rendered, the .deb made.
   packages+=(bash-completion groff-base man-db dpkg-dev)
+  # scripts/make-doc-pictures.sh: the docs' screenshots (Chromium) made small.
+  packages+=(pngquant optipng)
 fi
 
 missing=()

@@ -27,6 +27,7 @@
 #include <thread>
 #include <vector>
 
+#include "client_bus.hpp"
 #include "commands.hpp"
 #include "ncbridge/bus/participant.hpp"
 #include "ncbridge/bus/writer.hpp"
@@ -216,8 +217,7 @@ class StatusReaderProcess {
 };
 
 int run_capture_linuxcnc(const CaptureArguments& args) {
-  bus::BusConfig config = bus::config_from_environment();
-  if (args.domain) config.domain_id = *args.domain;
+  const bus::BusConfig config = client_bus(args.domain).config;
   bus::Participant participant(config);
   RunPublisher publisher(participant, args.controller);
 
@@ -318,8 +318,7 @@ std::string device_path(const std::string& device) { return "path=//Device[@name
 int run_capture_mtconnect(const CaptureArguments& args) {
   interpreter::Dialect dialect = interpreter::Dialect::Rs274Ngc;
   interpreter::parse_dialect_name(args.dialect, dialect);
-  bus::BusConfig config = bus::config_from_environment();
-  if (args.domain) config.domain_id = *args.domain;
+  const bus::BusConfig config = client_bus(args.domain).config;
   bus::Participant participant(config);
   const std::string controller = args.controller.empty() ? args.device : args.controller;
   RunPublisher publisher(participant, controller);
@@ -391,7 +390,7 @@ void add_capture_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("capture", "Publish what a real controller executes (live capture)");
   cmd->require_subcommand(1);
   auto common = [&](CLI::App* sub) {
-    sub->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));
+    sub->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else the running ncbridge up's)")->check(CLI::Range(0, 230));
     sub->add_option("--runs", args->runs, "Stop after this many runs ended (default: run until stopped)")
         ->check(CLI::NonNegativeNumber);
   };

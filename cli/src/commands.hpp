@@ -18,5 +18,8 @@ void add_submit_command(CLI::App& app, int& exit_code);
 void add_status_command(CLI::App& app, int& exit_code);
 void add_controller_sim_command(CLI::App& app, int& exit_code);
 void add_capture_command(CLI::App& app, int& exit_code);  // live capture from LinuxCNC, MTConnect
+void add_down_command(CLI::App& app, int& exit_code);     // stops `up` (up_registry.hpp)
+void add_fetch_command(CLI::App& app, int& exit_code);    // a submitted job's file, later
+void add_cancel_command(CLI::App& app, int& exit_code);
 
 }  // namespace ncbridge::cli

@@ -28,10 +28,12 @@
 #include <thread>
 #include <vector>
 
+#include "client_bus.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "input_files.hpp"
 #include "output_files.hpp"
+#include "tool_source.hpp"
 #include "ncbridge/bus/participant.hpp"
 #include "ncbridge/bus/writer.hpp"
 #include "ncbridge/capture/execution_order.hpp"
@@ -49,7 +51,7 @@ struct ControllerSimArguments {
   std::string program;
   std::string controller;
   std::string run_id;
-  std::string tools;
+  ToolSource tools;
   std::string dialect = "rs274ngc";
   double rate = 0;  // blocks per second, 0 = as fast as the bus takes them
   std::optional<std::uint32_t> domain;
@@ -59,11 +61,11 @@ struct ControllerSimArguments {
 };
 
 int run_controller_sim(const ControllerSimArguments& args) {
-  if (!args.tools.empty()) require_input_file(args.tools, "--tools");
+  args.tools.check();
   OutputSet outputs;
   OutputFile* output = args.output.empty() ? nullptr : &outputs.add(args.output, "-o");
   outputs.protect(args.program);
-  outputs.protect(args.tools);
+  outputs.protect(args.tools.file());
   const Input program = open_input(args.program, "program");
   std::string text;
   if (program.text) {
@@ -75,7 +77,7 @@ int run_controller_sim(const ControllerSimArguments& args) {
     read << in.rdbuf();
     text = read.str();
   }
-  const setup::ToolList tools = args.tools.empty() ? setup::ToolList{} : setup::read_tool_list(args.tools);
+  const setup::ToolList tools = args.tools.read();
   interpreter::Dialect dialect = interpreter::Dialect::Rs274Ngc;
   interpreter::parse_dialect_name(args.dialect, dialect);
   const std::vector<capture::ExecutedLine> blocks = capture::execution_order(program.name, text, tools, dialect);
@@ -87,15 +89,13 @@ int run_controller_sim(const ControllerSimArguments& args) {
   }
   const std::string job_id = args.controller + "/" + run_id;
 
-  bus::BusConfig config = bus::config_from_environment();
-  if (args.domain) config.domain_id = *args.domain;
-  bus::Participant participant(config);
+  const ClientBus bus = client_bus(args.domain);
+  bus::Participant participant(bus.config);
   std::optional<service::JobWatch> watch;
   if (!args.no_wait) watch.emplace(participant, job_id);
   bus::Writer writer(participant, bus::Topic::Blocks);
   if (!writer.wait_for_readers(1, std::chrono::seconds(10))) {
-    throw ServiceUnavailable("no interpreter service on DDS domain " + std::to_string(participant.domain_id()) +
-                             " (is `ncbridge up` running, with the CYCLONEDDS_URI it printed?)");
+    throw ServiceUnavailable(no_service_message(bus, "interpreter"));
   }
   const auto period = args.rate > 0 ? std::chrono::duration<double>(1.0 / args.rate) : std::chrono::duration<double>(0);
   auto next = std::chrono::steady_clock::now();
@@ -126,7 +126,8 @@ int run_controller_sim(const ControllerSimArguments& args) {
   const service::JobOutcome outcome = watch->wait(timeout);
   if (outcome.error) {
     const wire::JobStatus& e = *outcome.error;
-    print_error(e.where, e.message + " (" + e.stage + ")");
+    if (e.state == wire::JobState::Cancelled) print_error("run " + job_id + " was cancelled");
+    else print_error(e.where, e.message + " (" + e.stage + ")");
     return exit_status::input_error;
   }
   if (!outcome.file) {
@@ -151,11 +152,11 @@ void add_controller_sim_command(CLI::App& app, int& exit_code) {
   cmd->add_option("program", args->program, "Part program; - reads standard input")->required();
   cmd->add_option("--controller", args->controller, "Controller id")->required();
   cmd->add_option("--run-id", args->run_id, "Run id (default: run-<unix ms>)");
-  cmd->add_option("--tools", args->tools, "The controller's tool table (JSON or YAML), for running the program");
+  add_tool_source_options(*cmd, args->tools, ": the controller's tools, for running the program");
   cmd->add_option("--dialect", args->dialect, "Program dialect; control flow is run for rs274ngc only")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain"}));
   cmd->add_option("--rate", args->rate, "Blocks per second (default: as fast as possible)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));
+  cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else the running ncbridge up's)")->check(CLI::Range(0, 230));
   CLI::Option* output =
       cmd->add_option("-o,--output", args->output, "Write the run's Part 21 file here (- for standard output)");
   cmd->add_flag("--no-wait", args->no_wait, "Publish the run and exit, without waiting for its conversion")->excludes(output);

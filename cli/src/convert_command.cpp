@@ -34,6 +34,7 @@
 #include "ncbridge/cc1_builder/cc1_builder.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/common/version.hpp"
+#include "ncbridge/feature_recognizer/cc1_input.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/interpreter/interpreter.hpp"
 #include "ncbridge/setup/stock.hpp"
@@ -447,9 +448,6 @@ int run_streamed_cc1(const ConvertArguments& args, ConvertRun& run, Clock::time_
 ConvertRun open_run(const ConvertArguments& args, Verbosity verbosity) {
   ConvertRun run;
   run.feedback = Feedback(verbosity);
-  if (!args.html.empty() && args.level != "cc2") {
-    throw UsageError("--html needs --level cc2 (it draws the recognised features)");
-  }
   if (args.security_plane && !std::isfinite(*args.security_plane)) throw UsageError("--security-plane must be a number");
   args.tools.check();
   if (!args.stock.empty()) require_input_file(args.stock, "--stock");
@@ -470,10 +468,12 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
   if (!part21_input && (!args.tools.given() || args.stock.empty())) {
     throw UsageError("converting a program needs --tools (or --tool-table) and --stock");
   }
-  if (!part21_input && args.level == "cc1") return run_streamed_cc1(args, run, t0);
+  // The page draws the whole model: a program's CC1 model is then built whole, not streamed.
+  if (!part21_input && args.level == "cc1" && !run.html) return run_streamed_cc1(args, run, t0);
   std::vector<Warning> warnings;
   std::uint64_t calls = 0;
   stepnc::Project project;
+  std::optional<stepnc::Project> cc2_input;  // a CC2 file given toolpaths, for the page
   std::optional<setup::Stock> stock;
   if (!args.stock.empty()) stock = setup::read_stock(args.stock);
   Clock::time_point t_interpret, t_built;
@@ -486,6 +486,7 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
     project = std::move(read.project);
     if (args.level == "cc1" && needs_toolpaths(project)) {  // CC2 in: generate the toolpaths
       std::vector<std::string> notes;
+      if (run.html) cc2_input = project;  // the page lists its features
       project = generate_cc1(project, stock, run.program.name, notes);
       for (auto& n : notes) warnings.push_back({"generation", {run.program.name, 0, 0}, std::move(n)});
     }
@@ -562,7 +563,16 @@ int run_convert(const ConvertArguments& args, Verbosity verbosity) {
   if (run.html) {
     HtmlReportInput page;
     page.title = run.program.from_stdin() ? run.program.name : run.program.path.filename().string();
-    page.cc2 = &*cc2;
+    if (cc2) {
+      page.stock = cc2->stock;
+      page.model = &cc2->project;
+    } else {
+      page.level = "CC1";
+      page.stock = feature_recognizer::stock_from_cc1(project);
+      if (!page.stock) page.stock = stock;
+      page.model = cc2_input ? &*cc2_input : &project;
+      page.toolpaths = &project;
+    }
     for (const auto& w : warnings) {
       const bool setup = w.kind != "representation" && w.kind != "recognition" && w.kind != "input";
       (setup ? page.setup_warnings : page.warnings).push_back(w.where.to_string() + ": " + w.message);
@@ -596,7 +606,7 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--level", args->level, "Conformance class of the output")->check(CLI::IsMember({"cc1", "cc2"}));
   cmd->add_option("-o,--output", args->output, "Part 21 file to write; - writes standard output")->required();
   cmd->add_option("--report", args->report, "Also write a JSON report (docs/formats/report.md)");
-  cmd->add_option("--html", args->html, "Also write an HTML page: top view, toolpaths, features (--level cc2)");
+  cmd->add_option("--html", args->html, "Also write an HTML page: top and 3D views of the toolpaths and features (docs/viewer.md)");
   cmd->add_option("--security-plane", args->security_plane, "Security plane Z in mm (default: the highest rapid)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
   cmd->add_flag("--strict", args->strict,

@@ -18,6 +18,8 @@
 #include "commands.hpp"
 #include "errors.hpp"
 #include "feedback.hpp"
+#include "html_report.hpp"
+#include "ncbridge/feature_recognizer/cc1_input.hpp"
 #include "input_files.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/gcode_writer/program_writer.hpp"
@@ -53,6 +55,7 @@ struct GcodeArguments {
   std::optional<std::uint32_t> program_number;
   std::string program_name;
   bool drop_path_tolerance = false;
+  std::string html;
 };
 
 std::vector<std::filesystem::path> split_path(const std::string& text) {
@@ -129,8 +132,12 @@ int run_gcode(const GcodeArguments& args, const Feedback& feedback) {
   if (!args.stock.empty()) require_input_file(args.stock, "--stock");
   OutputSet outputs;
   OutputFile& out = outputs.add(args.output, "-o");
+  OutputFile* html = args.html.empty() ? nullptr : &outputs.add(args.html, "--html");
   for (const std::string* input : {&args.input, &args.tools, &args.tool_table, &args.stock}) outputs.protect(*input);
   const Input input = open_input(args.input, "program");
+  if (html && !is_part21(input)) {
+    throw UsageError("--html draws a STEP-NC input's toolpaths; for a program: ncbridge convert PROGRAM --level cc1 --html P.html");
+  }
 
   gcode_writer::Options options;
   options.dialect = *gcode_writer::parse_dialect(args.to);
@@ -164,14 +171,30 @@ int run_gcode(const GcodeArguments& args, const Feedback& feedback) {
     auto read = input.text ? step_writer::read_stepnc(*input.text, input.name) : step_writer::read_stepnc_file(input.path);
     progress.stop();
     for (const auto& w : read.warnings) print_warning(w.where, w.message);
+    std::optional<setup::Stock> stock;
+    if (!args.stock.empty()) stock = setup::read_stock(args.stock);
+    std::optional<stepnc::Project> cc2;  // the page lists a CC2 file's features
+    std::vector<std::string> page_warnings;
+    for (const auto& w : read.warnings) page_warnings.push_back(w.where.to_string() + ": " + w.message);
     if (needs_toolpaths(read.project)) {  // a CC2 file: its toolpaths generated first (docs/toolpaths.md)
       progress.set("generating toolpaths");
-      std::optional<setup::Stock> stock;
-      if (!args.stock.empty()) stock = setup::read_stock(args.stock);
       std::vector<std::string> notes;
+      if (html) cc2 = read.project;
       read.project = generate_cc1(read.project, stock, input.name, notes);
       progress.stop();
       for (const auto& n : notes) print_warning(SourceLocation{input.name, 0, 0}, n);
+      for (const auto& n : notes) page_warnings.push_back(input.name + ": " + n);
+    }
+    if (html) {
+      HtmlReportInput page;
+      page.title = input.from_stdin() ? input.name : input.path.filename().string();
+      page.level = "CC1";
+      page.stock = feature_recognizer::stock_from_cc1(read.project);
+      if (!page.stock) page.stock = stock;
+      page.model = cc2 ? &*cc2 : &read.project;
+      page.toolpaths = &read.project;
+      page.warnings = page_warnings;
+      html->write(html_report(page));
     }
     if (options.tools.empty()) options.tools = gcode_writer::stepnc_tools(read.project);
     gcode_writer::StepncOptions stepnc;
@@ -261,6 +284,7 @@ void add_gcode_command(CLI::App& app, int& exit_code) {
                                        "Number the blocks N10, N20, ... (default: as the dialect's programs usually are)");
   cmd->add_option("--program-number", args->program_number, "Fanuc/Mach3 O number of the program (default 1000)")
       ->check(CLI::Range(1, 9999));
+  cmd->add_option("--html", args->html, "Also write an HTML page of the toolpaths written (a STEP-NC input; docs/cli.md)");
   cmd->add_option("--program-name", args->program_name, "Program name (default: the output file's name)");
   cmd->add_flag("--drop-path-tolerance", args->drop_path_tolerance,
                 "Write LinuxCNC's G64 P tolerance as the dialect's plain continuous mode (it has no tolerance)");

@@ -1,9 +1,15 @@
 #include "html_report.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string_view>
+#include <type_traits>
+
+#include "ncbridge/common/error.hpp"
+#include "ncbridge/material_check/feature_region.hpp"
 
 namespace ncbridge::cli {
 
@@ -12,13 +18,13 @@ namespace ncbridge::cli {
 std::string_view three_js();
 std::string_view html_viewer_js();
 
-namespace fr = feature_recognizer;
 namespace sn = stepnc;
+namespace mc = material_check;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kWidthPx = 900;   // drawing width; the height follows the stock's aspect
+constexpr double kWidthPx = 900;   // drawing width; the height follows the drawing's aspect
 constexpr std::size_t kMaxPoints = 200000;  // toolpath points drawn at most (large programs are thinned)
 
 const char* const kPalette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
@@ -38,6 +44,17 @@ std::string escape(std::string_view s) {
   return out;
 }
 
+std::string json_string(std::string_view s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '<') out += "\\u003c";
+    else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
+    else out += c;
+  }
+  return out + "\"";
+}
+
 std::string num(double v, int decimals = 3) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
@@ -49,12 +66,27 @@ std::string num(double v, int decimals = 3) {
   return s == "-0" ? "0" : s;
 }
 
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
 // Program XY -> SVG pixels (y up in the program, down in SVG).
 struct View {
-  double xmin, ymax, scale, margin = 30;
+  double xmin, ymax, scale, margin = 40;
   double sx(double x) const { return margin + (x - xmin) * scale; }
   double sy(double y) const { return margin + (ymax - y) * scale; }
   std::string pt(double x, double y) const { return num(sx(x), 2) + "," + num(sy(y), 2); }
+};
+
+struct Box {
+  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300, zmin = 1e300, zmax = -1e300;
+  void add(double x, double y, double z) {
+    xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
+    zmin = std::min(zmin, z), zmax = std::max(zmax, z);
+  }
+  bool empty() const { return xmin > xmax; }
 };
 
 std::vector<sn::CartesianPoint> points_of(const sn::CompositeCurve& curve) {
@@ -85,218 +117,341 @@ std::vector<sn::CartesianPoint> points_of(const sn::CompositeCurve& curve) {
   return out;
 }
 
+const char* kind_colour(std::string_view kind) {
+  if (kind == "PLANAR_FACE") return "#555555";
+  if (kind == "ROUND_HOLE") return "#b00020";
+  if (kind == "CLOSED_POCKET") return "#0047ab";
+  if (kind == "OPEN_POCKET") return "#007a5e";
+  if (kind == "SLOT") return "#8a2be2";
+  if (kind == "STEP") return "#c05000";
+  if (kind == "GENERAL_OUTSIDE_PROFILE") return "#000000";
+  if (kind == "REGION") return "#808000";
+  return "#7f7f7f";  // TOOLPATH_FEATURE: no outline, its toolpath is the feature
+}
+
+std::string strategy_name(const sn::Operation& op) {
+  return std::visit(
+      [](const auto& o) -> std::string {
+        using O = std::decay_t<decltype(o)>;
+        if constexpr (std::is_base_of_v<sn::Two5DMillingOperation, O>) {
+          if (!o.its_machining_strategy) return "";
+          return std::visit(
+              [](const auto& s) -> std::string {
+                using S = std::decay_t<decltype(s)>;
+                if constexpr (std::is_same_v<S, sn::Unidirectional>) return "unidirectional";
+                else if constexpr (std::is_same_v<S, sn::Bidirectional>) return "bidirectional";
+                else if constexpr (std::is_same_v<S, sn::ContourParallel>) return "contour_parallel";
+                else if constexpr (std::is_same_v<S, sn::ContourSpiral>) return "contour_spiral";
+                else if constexpr (std::is_same_v<S, sn::CenterMilling>) return "center_milling";
+                else if constexpr (std::is_same_v<S, sn::BidirectionalContour>) return "bidirectional_contour";
+                else return "contour_bidirectional";
+              },
+              *o.its_machining_strategy);
+        } else {
+          return "";
+        }
+      },
+      op);
+}
+
 struct Path {
   std::vector<sn::CartesianPoint> points;
   bool rapid = false;
-  std::size_t workingstep = 0;  // index among drawn workingsteps (colour)
+  int workingstep = -1;  // index among the drawn workingsteps (colour); -1: a rapid between them
+  double low = 0;
 };
 
-std::string feature_outline(const fr::RecognizedFeature& f, const View& v) {
-  const auto& p = f.profile;
-  const double a = p.angle_deg * kPi / 180;
-  auto rect = [&](double length, double width, double radius) {
-    const double rx = std::min(radius, std::min(length, width) / 2) * v.scale;
-    return "<rect x=\"" + num(v.sx(f.x) - length / 2 * v.scale, 2) + "\" y=\"" + num(v.sy(f.y) - width / 2 * v.scale, 2) +
-           "\" width=\"" + num(length * v.scale, 2) + "\" height=\"" + num(width * v.scale, 2) + "\" rx=\"" + num(rx, 2) +
-           "\" transform=\"rotate(" + num(-p.angle_deg, 4) + " " + v.pt(f.x, f.y) + ")\"/>";
-  };
-  auto polygon = [&](const std::vector<fr::Point2>& ring) {
-    std::string s = "<polygon points=\"";
-    for (const auto& q : ring) s += v.pt(q.x, q.y) + " ";
-    return s + "\"/>";
-  };
-  (void)a;
-  switch (f.type) {
-    case fr::FeatureType::RoundHole:
-      return "<circle cx=\"" + num(v.sx(f.x), 2) + "\" cy=\"" + num(v.sy(f.y), 2) + "\" r=\"" + num(f.diameter / 2 * v.scale, 2) + "\"/>";
-    case fr::FeatureType::Slot: {
-      if (f.slot_course.size() < 2) break;
-      const auto& s0 = f.slot_course.front();
-      const auto& s1 = f.slot_course.back();
-      const double length = std::hypot(s1.x - s0.x, s1.y - s0.y);
-      const bool radiused = f.slot_ends[0] == fr::SlotEnd::Radiused;
-      const double total = radiused ? length + f.slot_width : length;
-      const double angle = std::atan2(s1.y - s0.y, s1.x - s0.x) * 180 / kPi;
-      fr::RecognizedFeature g = f;
-      g.x = (s0.x + s1.x) / 2, g.y = (s0.y + s1.y) / 2;
-      g.profile.angle_deg = angle;
-      const double rx = radiused ? f.slot_width / 2 : 0;
-      return "<rect x=\"" + num(v.sx(g.x) - total / 2 * v.scale, 2) + "\" y=\"" + num(v.sy(g.y) - f.slot_width / 2 * v.scale, 2) +
-             "\" width=\"" + num(total * v.scale, 2) + "\" height=\"" + num(f.slot_width * v.scale, 2) + "\" rx=\"" +
-             num(rx * v.scale, 2) + "\" transform=\"rotate(" + num(-angle, 4) + " " + v.pt(g.x, g.y) + ")\"/>";
+struct PageFeature {
+  std::string id, kind;
+  int kind_index = 0;
+  std::vector<std::vector<mc::Point2>> rings;  // the outline in program XY (none: a toolpath feature)
+  bool located = false;
+  double x = 0, y = 0, top = 0, bottom = 0;
+  std::string size;  // HTML
+  std::vector<std::string> operations;  // HTML, one per workingstep
+  std::vector<int> workingsteps;
+};
+
+struct PageWorkingstep {
+  std::string label;
+  int feature = -1;
+};
+
+// The page's content: features of the model, workingsteps and toolpaths of the toolpath model.
+struct Page {
+  std::vector<std::string> kinds;
+  std::vector<PageFeature> features;
+  std::vector<PageWorkingstep> workingsteps;
+  std::vector<Path> paths;
+};
+
+int kind_index(Page& page, const std::string& kind) {
+  for (std::size_t i = 0; i < page.kinds.size(); ++i) {
+    if (page.kinds[i] == kind) return static_cast<int>(i);
+  }
+  page.kinds.push_back(kind);
+  return static_cast<int>(page.kinds.size() - 1);
+}
+
+void shape_feature(PageFeature& f, const sn::Feature& feature, std::size_t index, const setup::Stock& stock) {
+  if (std::holds_alternative<sn::ToolpathFeature>(feature)) return;
+  mc::FeatureRegion region;
+  try {
+    region = mc::feature_region(feature, index, stock);
+  } catch (const InputError&) {
+    return;  // listed without an outline (the table says so)
+  }
+  const double tolerance = std::max({stock.size(0), stock.size(1), 1.0}) / 3000;
+  double umin = 1e300, umax = -1e300, vmin = 1e300, vmax = -1e300;
+  for (const auto& curve : region.outline) {
+    auto points = curve.points(tolerance);
+    if (points.size() < 2) continue;
+    for (const auto& p : points) {
+      const auto local = region.frame.to_local(p);
+      umin = std::min(umin, local.x), umax = std::max(umax, local.x), vmin = std::min(vmin, local.y), vmax = std::max(vmax, local.y);
     }
-    default: break;
+    f.rings.push_back(std::move(points));
   }
-  if (p.shape == fr::ProfileShape::Circular) {
-    return "<circle cx=\"" + num(v.sx(f.x), 2) + "\" cy=\"" + num(v.sy(f.y), 2) + "\" r=\"" + num(p.diameter / 2 * v.scale, 2) + "\"/>";
-  }
-  if (p.shape == fr::ProfileShape::Rectangular || (p.outline.empty() && p.length > 0)) return rect(p.length, p.width, p.corner_radius);
-  if (!p.outline.empty()) return polygon(p.outline);
-  return "";
-}
-
-const char* feature_colour(fr::FeatureType t);
-
-// A feature for the 3D view (JSON): its outline in XY ("c": circle, "r": rectangle, "p":
-// polygon) from its top to its bottom.
-std::string feature_json(const fr::RecognizedFeature& f, const std::string& id) {
-  const auto& p = f.profile;
-  std::string shape;
-  if (f.type == fr::FeatureType::RoundHole) {
-    shape = "\"k\":\"c\",\"d\":" + num(f.diameter);
-  } else if (f.type == fr::FeatureType::Slot && f.slot_course.size() >= 2) {
-    const auto& s0 = f.slot_course.front();
-    const auto& s1 = f.slot_course.back();
-    const double length = std::hypot(s1.x - s0.x, s1.y - s0.y) + (f.slot_ends[0] == fr::SlotEnd::Radiused ? f.slot_width : 0);
-    shape = "\"k\":\"r\",\"cx\":" + num((s0.x + s1.x) / 2) + ",\"cy\":" + num((s0.y + s1.y) / 2) + ",\"l\":" + num(length) +
-            ",\"w\":" + num(f.slot_width) + ",\"a\":" + num(std::atan2(s1.y - s0.y, s1.x - s0.x) * 180 / kPi);
-  } else if (p.shape == fr::ProfileShape::Circular) {
-    shape = "\"k\":\"c\",\"d\":" + num(p.diameter);
-  } else if (p.shape == fr::ProfileShape::Rectangular || (p.outline.empty() && p.length > 0)) {
-    shape = "\"k\":\"r\",\"l\":" + num(p.length) + ",\"w\":" + num(p.width) + ",\"a\":" + num(p.angle_deg);
-  } else if (!p.outline.empty()) {
-    shape = "\"k\":\"p\",\"ring\":[";
-    for (std::size_t i = 0; i < p.outline.size(); ++i) shape += (i ? "," : "") + num(p.outline[i].x) + "," + num(p.outline[i].y);
-    shape += "]";
+  if (f.rings.empty()) return;
+  f.located = true;
+  f.top = region.top_z;
+  f.bottom = region.floor_z;
+  if (region.hole_radius) {
+    f.x = region.frame.origin.x, f.y = region.frame.origin.y;
+    f.size = "&#8960;" + num(*region.hole_radius * 2, 2);
   } else {
-    return "";
+    const auto centre = region.frame.to_program((umin + umax) / 2, (vmin + vmax) / 2);
+    f.x = centre.x, f.y = centre.y;
+    f.size = num(umax - umin, 2) + " &#215; " + num(vmax - vmin, 2);
   }
-  std::string json_id;
-  for (char c : id) {
-    if (c == '"' || c == '\\') json_id += '\\';
-    if (c == '<') json_id += "\\u003c"; else json_id += c;
-  }
-  return "{\"id\":\"" + json_id + "\",\"x\":" + num(f.x) + ",\"y\":" + num(f.y) + ",\"t\":" + num(f.top_z) + ",\"b\":" +
-         num(f.bottom_z) + ",\"col\":\"" + feature_colour(f.type) + "\"," + shape + "}";
 }
 
-const char* feature_colour(fr::FeatureType t) {
-  switch (t) {
-    case fr::FeatureType::PlanarFace: return "#555555";
-    case fr::FeatureType::RoundHole: return "#b00020";
-    case fr::FeatureType::ClosedPocket: return "#0047ab";
-    case fr::FeatureType::OpenPocket: return "#007a5e";
-    case fr::FeatureType::Slot: return "#8a2be2";
-    case fr::FeatureType::Step: return "#c05000";
-    case fr::FeatureType::GeneralOutsideProfile: return "#000000";
-    case fr::FeatureType::Region: return "#808000";
-  }
-  return "#000000";
-}
-
-std::string dims_text(const fr::RecognizedFeature& f) {
-  const auto& p = f.profile;
-  switch (f.type) {
-    case fr::FeatureType::RoundHole: return "&#8960;" + num(f.diameter, 2);
-    case fr::FeatureType::Slot: return "w " + num(f.slot_width, 2);
-    default: break;
-  }
-  if (p.shape == fr::ProfileShape::Circular) return "&#8960;" + num(p.diameter, 2);
-  std::string s = num(p.length, 2) + " &#215; " + num(p.width, 2);
-  if (p.shape == fr::ProfileShape::Rectangular && p.corner_radius > 0.01) s += " r" + num(p.corner_radius, 2);
-  if (p.corner_chamfer > 0.01) s += " chamfer " + num(p.corner_chamfer, 2) + " &#215; 45&#176;";
+std::string operation_text(const sn::Project& p, const sn::MachiningWorkingstep& ws) {
+  const auto& op = p.operation(ws.its_operation);
+  std::string s = escape(ws.its_id) + ": " + escape(lower(sn::entity_name(op))) + " " +
+                  escape(p.tool(sn::machining_operation(op).its_tool).its_id);
+  const std::string strategy = strategy_name(op);
+  if (!strategy.empty()) s += " (" + strategy + ")";
   return s;
 }
 
-}  // namespace
+Page build_page(const sn::Project& model, const sn::Project& toolpaths, const setup::Stock& stock) {
+  Page page;
+  std::map<std::string, int> feature_by_id;
+  for (std::size_t i = 0; i < model.features.size(); ++i) {
+    PageFeature f;
+    f.id = sn::feature_id(model.features[i]);
+    f.kind = std::string(sn::entity_name(model.features[i]));
+    f.kind_index = kind_index(page, f.kind);
+    shape_feature(f, model.features[i], i, stock);
+    feature_by_id.emplace(f.id, static_cast<int>(i));
+    page.features.push_back(std::move(f));
+  }
+  std::map<std::string, const sn::MachiningWorkingstep*> model_workingsteps;
+  for (const auto& e : model.main_workplan.its_elements) {
+    if (const auto* ws = std::get_if<sn::MachiningWorkingstep>(&e)) model_workingsteps.emplace(ws->its_id, ws);
+  }
 
-std::string html_report(const HtmlReportInput& in) {
-  const Cc2Output& cc2 = *in.cc2;
-  const auto& stock = cc2.stock;
-  const auto& project = cc2.project;
-
-  // Toolpaths per machining workingstep (and rapid movements between them).
-  std::vector<Path> paths;
-  std::vector<std::string> legend;
-  std::size_t total_points = 0;
-  for (const auto& e : project.main_workplan.its_elements) {
+  for (const auto& e : toolpaths.main_workplan.its_elements) {
     if (const auto* r = std::get_if<sn::RapidMovement>(&e)) {
       if (!r->its_toolpath) continue;
-      for (const auto& t : r->its_toolpath->its_list) paths.push_back({points_of(t.basiccurve), true, legend.size()});
+      for (const auto& t : r->its_toolpath->its_list) page.paths.push_back({points_of(t.basiccurve), true, -1});
       continue;
     }
     if (const auto* probing = std::get_if<sn::WorkpieceProbing>(&e)) {  // the probe's travel, as a rapid
       const auto& s = probing->start_position.location;
       const auto& d = probing->its_direction;
       const double travel = probing->expected_value.theoretical_size + probing->expected_value.upper_limit;
-      paths.push_back({{s, {s.x + d.x * travel, s.y + d.y * travel, s.z + d.z * travel}}, true, legend.size()});
+      page.paths.push_back({{s, {s.x + d.x * travel, s.y + d.y * travel, s.z + d.z * travel}}, true, -1});
       continue;
     }
     const auto& ws = std::get<sn::MachiningWorkingstep>(e);
-    const auto& op = sn::machining_operation(project.operation(ws.its_operation));
+    const int w = static_cast<int>(page.workingsteps.size());
+    const auto& op = sn::machining_operation(toolpaths.operation(ws.its_operation));
     if (op.its_toolpath) {
       for (const auto& t : op.its_toolpath->its_list) {
         const bool rapid = t.its_type == sn::ToolpathType::Connect || t.its_type == sn::ToolpathType::NonContact;
-        paths.push_back({points_of(t.basiccurve), rapid, legend.size()});
+        page.paths.push_back({points_of(t.basiccurve), rapid, w});
       }
-    } else if (const auto* hole = std::get_if<sn::RoundHole>(&project.feature(ws.its_feature))) {
+    } else if (const auto* hole = std::get_if<sn::RoundHole>(&toolpaths.feature(ws.its_feature))) {
       // A drilling cycle: the drill's axis from the hole's top to its depth (a dot from above).
       const auto& l = hole->feature_placement.location;
-      paths.push_back({{l, {l.x, l.y, l.z + hole->depth.position.location.z}}, false, legend.size()});
+      page.paths.push_back({{l, {l.x, l.y, l.z + hole->depth.position.location.z}}, false, w});
     }
-    legend.push_back(ws.its_id + " — " + std::string(sn::entity_name(project.operation(ws.its_operation))) + " — " +
-                     project.tool(op.its_tool).its_id);
+    // Its feature in the model: the same workingstep's, else the feature of the same id.
+    int feature = -1;
+    const sn::Project* described = &toolpaths;
+    const sn::MachiningWorkingstep* described_ws = &ws;
+    if (&model == &toolpaths) {
+      feature = static_cast<int>(ws.its_feature.index);
+      described = &model;
+    } else if (auto found = model_workingsteps.find(ws.its_id); found != model_workingsteps.end()) {
+      feature = static_cast<int>(found->second->its_feature.index);
+      described = &model, described_ws = found->second;
+    } else if (auto by_id = feature_by_id.find(sn::feature_id(toolpaths.feature(ws.its_feature))); by_id != feature_by_id.end()) {
+      feature = by_id->second;
+    }
+    if (feature >= static_cast<int>(page.features.size())) feature = -1;
+    PageWorkingstep step;
+    step.feature = feature;
+    step.label = operation_text(*described, *described_ws);
+    if (feature >= 0) {
+      step.label += " &#8212; " + escape(page.features[static_cast<std::size_t>(feature)].id);
+      page.features[static_cast<std::size_t>(feature)].workingsteps.push_back(w);
+      page.features[static_cast<std::size_t>(feature)].operations.push_back(operation_text(*described, *described_ws));
+    }
+    page.workingsteps.push_back(std::move(step));
   }
-  for (const auto& p : paths) total_points += p.points.size();
+  for (auto& p : page.paths) {
+    p.low = 1e300;
+    for (const auto& q : p.points) p.low = std::min(p.low, q.z);
+  }
+  // Features without an outline (TOOLPATH_FEATUREs): placed where their cuts are.
+  std::vector<Box> cut_boxes(page.workingsteps.size());
+  for (const auto& p : page.paths) {
+    if (p.rapid || p.workingstep < 0) continue;
+    for (const auto& q : p.points) cut_boxes[static_cast<std::size_t>(p.workingstep)].add(q.x, q.y, q.z);
+  }
+  for (auto& f : page.features) {
+    if (f.located) continue;
+    Box b;
+    for (int w : f.workingsteps) {
+      const Box& c = cut_boxes[static_cast<std::size_t>(w)];
+      if (c.empty()) continue;
+      b.add(c.xmin, c.ymin, c.zmin);
+      b.add(c.xmax, c.ymax, c.zmax);
+    }
+    if (b.empty()) continue;
+    f.x = (b.xmin + b.xmax) / 2, f.y = (b.ymin + b.ymax) / 2, f.top = b.zmax, f.bottom = b.zmin;
+    f.size = b.xmax - b.xmin < 0.01 && b.ymax - b.ymin < 0.01 ? std::string("a plunge")
+                                                               : "cuts " + num(b.xmax - b.xmin, 2) + " &#215; " + num(b.ymax - b.ymin, 2);
+  }
+  return page;
+}
 
-  // The view: the stock and everything the tool went over (a profile's path lies outside it).
-  double xmin = stock.min[0], xmax = stock.max[0], ymin = stock.min[1], ymax = stock.max[1];
-  for (const auto& p : paths) {
-    for (const auto& q : p.points) {
-      xmin = std::min(xmin, q.x), xmax = std::max(xmax, q.x), ymin = std::min(ymin, q.y), ymax = std::max(ymax, q.y);
+// A length of 1, 2 or 5 times a power of ten near `target`.
+double nice_length(double target) {
+  const double p = std::pow(10.0, std::floor(std::log10(std::max(target, 1e-6))));
+  for (double k : {1.0, 2.0, 5.0}) {
+    if (k * p >= target * 0.7) return k * p;
+  }
+  return 10 * p;
+}
+
+}  // namespace
+
+std::string html_report(const HtmlReportInput& in) {
+  const sn::Project& model = *in.model;
+  const sn::Project& drawn = in.toolpaths ? *in.toolpaths : model;
+
+  // The box: the stock, or the toolpaths' extent.
+  Box extent;
+  setup::Stock stock;
+  if (in.stock) stock = *in.stock;
+  Page page = build_page(model, drawn, in.stock ? stock : setup::Stock{});
+  for (const auto& p : page.paths) {
+    for (const auto& q : p.points) extent.add(q.x, q.y, q.z);
+  }
+  if (!in.stock) {
+    if (extent.empty()) extent.add(0, 0, 0);
+    stock.min = {extent.xmin, extent.ymin, extent.zmin};
+    stock.max = {extent.xmax, extent.ymax, std::max(extent.zmax, extent.zmin + 1e-3)};
+    page = build_page(model, drawn, stock);  // the outlines of steps and profiles reach the stock's edges
+  }
+  extent.add(stock.min[0], stock.min[1], stock.min[2]);
+  extent.add(stock.max[0], stock.max[1], stock.max[2]);
+  for (const auto& f : page.features) {
+    for (const auto& ring : f.rings) {
+      for (const auto& q : ring) extent.add(q.x, q.y, f.bottom);
     }
   }
-  const double w = std::max(xmax - xmin, 1e-3), h = std::max(ymax - ymin, 1e-3);
-  View v{xmin, ymax, kWidthPx / w};
+  // The program zero is drawn (axes) when it lies near the drawing.
+  const double reach = std::max(extent.xmax - extent.xmin, extent.ymax - extent.ymin);
+  const bool show_origin = extent.xmin - 0.25 * reach <= 0 && 0 <= extent.xmax + 0.25 * reach && extent.ymin - 0.25 * reach <= 0 &&
+                           0 <= extent.ymax + 0.25 * reach;
+  if (show_origin) extent.add(0, 0, extent.zmin);
+  const double w = std::max(extent.xmax - extent.xmin, 1e-3), h = std::max(extent.ymax - extent.ymin, 1e-3);
+  View v{extent.xmin, extent.ymax, kWidthPx / w};
   const double height_px = h * v.scale + 2 * v.margin, width_px = kWidthPx + 2 * v.margin;
-  // Thinning: skip points closer than `step` to the last drawn one when the program is large.
+  std::size_t total_points = 0;
+  for (const auto& p : page.paths) total_points += p.points.size();
+  // Thinning: skip points closer than `thin` to the last drawn one when the program is large.
   const double thin = total_points > kMaxPoints ? std::sqrt(static_cast<double>(total_points) / kMaxPoints) * 0.5 / v.scale : 0;
-
-  std::string svg;
-  svg += "<svg id=\"top\" xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + num(width_px, 0) + " " + num(height_px, 0) +
-         "\" width=\"" + num(width_px, 0) + "\" height=\"" + num(height_px, 0) + "\">\n";
-  svg += "<rect x=\"" + num(v.sx(stock.min[0]), 2) + "\" y=\"" + num(v.sy(stock.max[1]), 2) + "\" width=\"" +
-         num(stock.size(0) * v.scale, 2) + "\" height=\"" + num(stock.size(1) * v.scale, 2) +
-         "\" fill=\"#f4f1ea\" stroke=\"#999\" stroke-width=\"1\"/>\n";
-  svg += "<text x=\"" + num(v.sx(stock.min[0]), 2) + "\" y=\"" + num(v.sy(stock.max[1]) - 8, 2) + "\" class=\"axis\">stock " +
-         num(stock.size(0)) + " &#215; " + num(stock.size(1)) + " &#215; " + num(stock.size(2)) + " mm, X &#8594; Y &#8593;</text>\n";
-  svg += "<g fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
-  for (const auto& p : paths) {
-    if (p.points.empty()) continue;
-    std::string pts;
+  auto thinned = [&](const Path& p, auto&& emit) {
     double lx = 1e300, ly = 1e300;
     for (std::size_t i = 0; i < p.points.size(); ++i) {
       const auto& q = p.points[i];
-      if (thin > 0 && i + 1 < p.points.size() && std::hypot(q.x - lx, q.y - ly) < thin) continue;
-      pts += v.pt(q.x, q.y) + " ";
+      if (thin > 0 && i > 0 && i + 1 < p.points.size() && std::hypot(q.x - lx, q.y - ly) < thin) continue;
+      emit(q);
       lx = q.x, ly = q.y;
     }
+  };
+  auto colour_of = [](int ws) { return kPalette[static_cast<std::size_t>(ws) % std::size(kPalette)]; };
+
+  std::string svg;
+  svg += "<svg id=\"top\" xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + num(width_px, 0) + " " + num(height_px, 0) +
+         "\" width=\"" + num(width_px, 0) + "\" height=\"" + num(height_px, 0) + "\" data-scale=\"" + num(v.scale, 6) +
+         "\" data-x0=\"" + num(v.xmin, 6) + "\" data-y0=\"" + num(v.ymax, 6) + "\" data-margin=\"" + num(v.margin) + "\">\n";
+  svg += "<rect class=\"stock\" x=\"" + num(v.sx(stock.min[0]), 2) + "\" y=\"" + num(v.sy(stock.max[1]), 2) + "\" width=\"" +
+         num(stock.size(0) * v.scale, 2) + "\" height=\"" + num(stock.size(1) * v.scale, 2) +
+         "\" fill=\"#f4f1ea\" stroke=\"#999\" stroke-width=\"1\"/>\n";
+  if (!show_origin || std::abs(stock.min[0]) > 1e-6 || std::abs(stock.min[1]) > 1e-6) {  // else the axes mark it
+    svg += "<text x=\"" + num(v.sx(stock.min[0]), 2) + "\" y=\"" + num(v.sy(stock.min[1]) + 14, 2) + "\" class=\"axis\">X" +
+           num(stock.min[0], 2) + " Y" + num(stock.min[1], 2) + "</text>\n";
+  }
+  svg += "<text x=\"" + num(v.sx(stock.max[0]), 2) + "\" y=\"" + num(v.sy(stock.max[1]) - 6, 2) +
+         "\" class=\"axis\" text-anchor=\"end\">X" + num(stock.max[0], 2) + " Y" + num(stock.max[1], 2) + "</text>\n";
+  if (show_origin) {
+    const double arrow = nice_length(reach / 8);
+    const double ox = v.sx(0), oy = v.sy(0), len = arrow * v.scale;
+    svg += "<g class=\"axes\" stroke-width=\"1.5\"><line x1=\"" + num(ox, 2) + "\" y1=\"" + num(oy, 2) + "\" x2=\"" + num(ox + len, 2) +
+           "\" y2=\"" + num(oy, 2) + "\" stroke=\"#d00\" marker-end=\"url(#ax)\"/><line x1=\"" + num(ox, 2) + "\" y1=\"" + num(oy, 2) +
+           "\" x2=\"" + num(ox, 2) + "\" y2=\"" + num(oy - len, 2) + "\" stroke=\"#080\" marker-end=\"url(#ay)\"/>"
+           "<text x=\"" + num(ox + len + 4, 2) + "\" y=\"" + num(oy + 4, 2) + "\" fill=\"#d00\" class=\"axis\">X</text><text x=\"" +
+           num(ox - 4, 2) + "\" y=\"" + num(oy - len - 6, 2) + "\" fill=\"#080\" class=\"axis\">Y</text>"
+           "<circle cx=\"" + num(ox, 2) + "\" cy=\"" + num(oy, 2) + "\" r=\"2.5\" fill=\"#333\"/></g>\n"
+           "<defs><marker id=\"ax\" markerWidth=\"8\" markerHeight=\"8\" refX=\"6\" refY=\"3\" orient=\"auto\"><path d=\"M0,0 L6,3 L0,6 z\" "
+           "fill=\"#d00\"/></marker><marker id=\"ay\" markerWidth=\"8\" markerHeight=\"8\" refX=\"6\" refY=\"3\" orient=\"auto\">"
+           "<path d=\"M0,0 L6,3 L0,6 z\" fill=\"#080\"/></marker></defs>\n";
+  }
+  svg += "<g id=\"paths\" fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
+  for (const auto& p : page.paths) {
+    if (p.points.empty()) continue;
+    std::string pts;
+    thinned(p, [&](const sn::CartesianPoint& q) { pts += v.pt(q.x, q.y) + " "; });
+    const std::string attrs = "data-low=\"" + num(p.low) + "\"" + (p.workingstep >= 0 ? " data-ws=\"" + std::to_string(p.workingstep) + "\"" : "");
     if (p.rapid) {
-      svg += "<polyline points=\"" + pts + "\" stroke=\"#aaa\" stroke-width=\"0.6\" stroke-dasharray=\"3 3\"/>\n";
+      svg += "<polyline class=\"rp\" " + attrs + " points=\"" + pts + "\" stroke=\"#888\" stroke-width=\"0.7\" stroke-dasharray=\"4 3\"/>\n";
     } else {
-      svg += "<polyline class=\"ws" + std::to_string(p.workingstep) + "\" points=\"" + pts + "\" stroke=\"" +
-             kPalette[p.workingstep % std::size(kPalette)] + "\" stroke-width=\"1\" stroke-opacity=\"0.75\"/>\n";
+      svg += "<polyline class=\"cut\" " + attrs + " points=\"" + pts + "\" stroke=\"" + colour_of(p.workingstep) +
+             "\" stroke-width=\"1.2\"/>\n";
       if (p.points.size() == 2 && p.points[0].x == p.points[1].x && p.points[0].y == p.points[1].y) {
-        svg += "<circle cx=\"" + num(v.sx(p.points[0].x), 2) + "\" cy=\"" + num(v.sy(p.points[0].y), 2) + "\" r=\"2.5\" fill=\"" +
-               kPalette[p.workingstep % std::size(kPalette)] + "\"/>\n";
+        svg += "<circle class=\"cut\" " + attrs + " cx=\"" + num(v.sx(p.points[0].x), 2) + "\" cy=\"" + num(v.sy(p.points[0].y), 2) +
+               "\" r=\"2.5\" fill=\"" + colour_of(p.workingstep) + "\"/>\n";
       }
     }
   }
-  svg += "</g>\n<g fill=\"none\" stroke-width=\"2.5\" stroke-dasharray=\"8 4\">\n";
-  for (std::size_t i = 0; i < cc2.features.size(); ++i) {
-    const auto& f = cc2.features[i];
-    const std::string outline = feature_outline(f, v);
-    if (outline.empty()) continue;
-    svg += "<g id=\"f" + std::to_string(i) + "\" stroke=\"" + std::string(feature_colour(f.type)) + "\"><title>" + escape(cc2.feature_ids[i]) + "</title>" + outline + "</g>\n";
+  svg += "</g>\n<g id=\"outlines\" fill=\"none\" stroke-width=\"2.2\" stroke-dasharray=\"8 4\">\n";
+  for (std::size_t i = 0; i < page.features.size(); ++i) {
+    const auto& f = page.features[i];
+    if (f.rings.empty()) continue;
+    std::string d;
+    for (const auto& ring : f.rings) {
+      for (std::size_t k = 0; k < ring.size(); ++k) d += (k ? "L" : "M") + v.pt(ring[k].x, ring[k].y);
+      d += "Z";
+    }
+    svg += "<g id=\"f" + std::to_string(i) + "\" class=\"ol\" data-k=\"" + std::to_string(f.kind_index) + "\" stroke=\"" +
+           kind_colour(f.kind) + "\"><title>" + escape(f.id) + " (" + escape(lower(f.kind)) + ")</title><path d=\"" + d + "\"/></g>\n";
   }
-  svg += "</g>\n";
-  // Labels at the features' centres, moved down a line while they would cover an earlier one.
+  svg += "</g>\n<g id=\"labels\">\n";
+  // Labels at the outlined features' centres, moved down a line while they would cover an earlier one.
   std::vector<std::pair<double, double>> placed;
-  for (std::size_t i = 0; i < cc2.features.size(); ++i) {
-    const auto& f = cc2.features[i];
+  for (std::size_t i = 0; i < page.features.size(); ++i) {
+    const auto& f = page.features[i];
+    if (f.rings.empty()) continue;
     const double x = v.sx(f.x);
     double y = v.sy(f.y);
-    const double half_width = 3.6 * static_cast<double>(cc2.feature_ids[i].size());
+    const double half_width = 3.6 * static_cast<double>(f.id.size());
     for (bool moved = true; moved;) {
       moved = false;
       for (const auto& [px, py] : placed) {
@@ -307,10 +462,27 @@ std::string html_report(const HtmlReportInput& in) {
       }
     }
     placed.emplace_back(x, y);
-    svg += "<text class=\"label\" x=\"" + num(x, 2) + "\" y=\"" + num(y, 2) + "\" fill=\"" + feature_colour(f.type) + "\">" +
-           escape(cc2.feature_ids[i]) + "</text>\n";
+    svg += "<text class=\"label\" data-f=\"" + std::to_string(i) + "\" data-k=\"" + std::to_string(f.kind_index) + "\" x=\"" +
+           num(x, 2) + "\" y=\"" + num(y, 2) + "\" fill=\"" + kind_colour(f.kind) + "\">" + escape(f.id) + "</text>\n";
   }
-  svg += "</svg>\n";
+  svg += "</g>\n</svg>\n";
+
+  // The toolbar (legend and toggles) above the drawing.
+  double zmin = extent.zmin, zmax = extent.zmax;
+  std::string toolbar = "<div class=\"toolbar\" id=\"toolbar\"><span class=\"tb-title\">Feature kinds</span> ";
+  for (std::size_t k = 0; k < page.kinds.size(); ++k) {
+    std::size_t n = 0;
+    for (const auto& f : page.features) n += f.kind_index == static_cast<int>(k);
+    toolbar += "<label class=\"kind\"><input type=\"checkbox\" checked data-kind=\"" + std::to_string(k) + "\"> <span class=\"ksw\" style=\"border-color:" +
+               std::string(kind_colour(page.kinds[k])) + "\"></span>" + escape(lower(page.kinds[k])) + " (" + std::to_string(n) + ")</label> ";
+  }
+  toolbar += "<br><label><input type=\"checkbox\" id=\"show-cuts\" checked> <span class=\"lsw cutsw\"></span>cutting moves (colour per workingstep)</label> "
+             "<label><input type=\"checkbox\" id=\"show-rapids\" checked> <span class=\"lsw rapidsw\"></span>rapid and non-cutting moves</label> "
+             "<label><input type=\"checkbox\" id=\"show-features\" checked> <span class=\"lsw olsw\"></span>feature outlines</label> "
+             "<label><input type=\"checkbox\" id=\"show-labels\" checked> labels</label><br>"
+             "<label>lowest Z shown <input type=\"range\" id=\"zcut\" min=\"" + num(zmin - 0.001) + "\" max=\"" + num(zmax) +
+             "\" step=\"any\" value=\"" + num(zmin - 0.001) + "\"> <output id=\"zcut-value\">all</output></label> "
+             "<label><input type=\"checkbox\" id=\"zband\"> only that layer (&#177;0.05 mm)</label></div>\n";
 
   // Side panel: setup warnings first, where they cannot be missed.
   std::string panel;
@@ -320,31 +492,29 @@ std::string html_report(const HtmlReportInput& in) {
     for (const auto& warning : in.setup_warnings) panel += "<li>" + escape(warning) + "</li>\n";
     panel += "</ul></div>\n";
   }
-  panel += "<h2>Features (" + std::to_string(cc2.features.size()) + ")</h2>\n<table><tr><th>id</th><th>type</th><th>centre</th>"
-           "<th>z top / bottom</th><th>size</th><th>operations</th></tr>\n";
-  for (std::size_t i = 0; i < cc2.features.size(); ++i) {
-    const auto& f = cc2.features[i];
+  panel += "<h2>Features (" + std::to_string(page.features.size()) + ") <span class=\"note\">click a row: the feature and its toolpaths</span></h2>\n"
+           "<table id=\"features\"><tr><th>id</th><th>kind</th><th>centre mm</th><th>Z top / bottom</th><th>size mm</th><th>workingsteps</th></tr>\n";
+  for (std::size_t i = 0; i < page.features.size(); ++i) {
+    const auto& f = page.features[i];
     std::string ops;
-    for (const auto& op : f.operations) {
-      ops += escape(std::string(fr::to_string(op.type))) + " T" + std::to_string(op.tool_number);
-      if (op.strategy != fr::Strategy::None && op.strategy != fr::Strategy::Plunge) ops += " (" + escape(std::string(fr::to_string(op.strategy))) + ")";
-      ops += "<br>";
-    }
-    panel += "<tr data-f=\"" + std::to_string(i) + "\"><td><span class=\"sw\" style=\"border-color:" + std::string(feature_colour(f.type)) + "\"></span>" +
-             escape(cc2.feature_ids[i]) + "</td><td>" + escape(std::string(fr::to_string(f.type))) + "</td><td>" + num(f.x, 2) + ", " +
-             num(f.y, 2) + "</td><td>" + num(f.top_z, 2) + " / " + num(f.bottom_z, 2) + "</td><td>" + dims_text(f) + "</td><td>" + ops +
-             "</td></tr>\n";
+    for (const auto& op : f.operations) ops += op + "<br>";
+    const std::string where = f.located || !f.size.empty() ? num(f.x, 2) + ", " + num(f.y, 2) : "&#8212;";
+    const std::string z = f.located || !f.size.empty() ? num(f.top, 2) + " / " + num(f.bottom, 2) : "&#8212;";
+    std::string size = f.size.empty() ? "&#8212;" : f.size;
+    if (f.rings.empty() && f.kind != "TOOLPATH_FEATURE") size += " <span class=\"note\">(no outline: its geometry could not be drawn)</span>";
+    panel += "<tr data-f=\"" + std::to_string(i) + "\" data-k=\"" + std::to_string(f.kind_index) + "\"><td><span class=\"ksw\" style=\"border-color:" +
+             std::string(kind_colour(f.kind)) + "\"></span>" + escape(f.id) + "</td><td>" + escape(lower(f.kind)) + "</td><td>" + where +
+             "</td><td>" + z + "</td><td>" + size + "</td><td>" + ops + "</td></tr>\n";
   }
-  panel += "</table>\n<h2>Workingsteps (" + std::to_string(legend.size()) + ")</h2>\n<ul class=\"legend\">\n";
-  for (std::size_t i = 0; i < legend.size(); ++i) {
+  panel += "</table>\n<h2>Workingsteps (" + std::to_string(page.workingsteps.size()) +
+           ") <span class=\"note\">toggle; hover: highlight</span></h2>\n<ul class=\"legend\" id=\"workingsteps\">\n";
+  for (std::size_t i = 0; i < page.workingsteps.size(); ++i) {
     panel += "<li data-ws=\"" + std::to_string(i) + "\"><label><input type=\"checkbox\" checked data-ws=\"" + std::to_string(i) +
-             "\"> <span class=\"sw\" style=\"background:" + std::string(kPalette[i % std::size(kPalette)]) + "\"></span>" +
-             escape(legend[i]) + "</label></li>\n";
+             "\"> <span class=\"sw\" style=\"background:" + colour_of(static_cast<int>(i)) + "\"></span>" + page.workingsteps[i].label +
+             "</label></li>\n";
   }
   panel += "</ul>\n<h2>Tools</h2>\n<table><tr><th>id</th><th>&#8960; mm</th></tr>\n";
-  for (const auto& t : project.tools) {
-    panel += "<tr><td>" + escape(t.its_id) + "</td><td>" + num(t.dimension.diameter) + "</td></tr>\n";
-  }
+  for (const auto& t : drawn.tools) panel += "<tr><td>" + escape(t.its_id) + "</td><td>" + num(t.dimension.diameter) + "</td></tr>\n";
   panel += "</table>\n<h2>Warnings (" + std::to_string(in.setup_warnings.size() + in.warnings.size()) + ")</h2>\n<ul>\n";
   for (const auto& warning : in.setup_warnings) panel += "<li>" + escape(warning) + "</li>\n";
   for (const auto& warning : in.warnings) panel += "<li>" + escape(warning) + "</li>\n";
@@ -352,46 +522,45 @@ std::string html_report(const HtmlReportInput& in) {
   panel += "</ul>\n";
   if (thin > 0) panel += "<p class=\"note\">Toolpaths thinned for display (" + std::to_string(total_points) + " points).</p>\n";
 
-  // The 3D view's data: toolpaths (x,y,z triples, thinned like the drawing), features, stock.
-  double zmin = stock.min[2], zmax = stock.max[2];
+  // The views' data: toolpaths (x,y,z triples, thinned like the drawing), outlined features,
+  // the feature of each workingstep, the kind of each feature.
   std::string data = "{\"stock\":{\"min\":[" + num(stock.min[0]) + "," + num(stock.min[1]) + "," + num(stock.min[2]) + "],\"max\":[" +
                      num(stock.max[0]) + "," + num(stock.max[1]) + "," + num(stock.max[2]) + "]},\"colours\":[";
   for (std::size_t i = 0; i < std::size(kPalette); ++i) data += std::string(i ? "," : "") + "\"" + kPalette[i] + "\"";
+  data += "],\"wsf\":[";
+  for (std::size_t i = 0; i < page.workingsteps.size(); ++i) data += (i ? "," : "") + std::to_string(page.workingsteps[i].feature);
+  data += "],\"fk\":[";
+  for (std::size_t i = 0; i < page.features.size(); ++i) data += (i ? "," : "") + std::to_string(page.features[i].kind_index);
   data += "],\"paths\":[";
-  bool first_path = true;
-  for (const auto& p : paths) {
+  bool first = true;
+  for (const auto& p : page.paths) {
     if (p.points.empty()) continue;
     std::string pts;
-    double lx = 1e300, ly = 1e300;
-    for (std::size_t i = 0; i < p.points.size(); ++i) {
-      const auto& q = p.points[i];
-      if (thin > 0 && i + 1 < p.points.size() && std::hypot(q.x - lx, q.y - ly) < thin) continue;
-      pts += (pts.empty() ? "" : ",") + num(q.x) + "," + num(q.y) + "," + num(q.z);
-      lx = q.x, ly = q.y;
-      zmin = std::min(zmin, q.z), zmax = std::max(zmax, q.z);
-    }
-    data += std::string(first_path ? "" : ",") + "{\"w\":" + std::to_string(p.workingstep) + ",\"r\":" + (p.rapid ? "1" : "0") +
-            ",\"p\":[" + pts + "]}";
-    first_path = false;
+    thinned(p, [&](const sn::CartesianPoint& q) { pts += (pts.empty() ? "" : ",") + num(q.x) + "," + num(q.y) + "," + num(q.z); });
+    data += std::string(first ? "" : ",") + "{\"w\":" + std::to_string(p.workingstep) + ",\"r\":" + (p.rapid ? "1" : "0") + ",\"p\":[" + pts + "]}";
+    first = false;
   }
   data += "],\"features\":[";
-  bool first_feature = true;
-  for (std::size_t i = 0; i < cc2.features.size(); ++i) {
-    const std::string f = feature_json(cc2.features[i], cc2.feature_ids[i]);
-    if (f.empty()) continue;
-    data += std::string(first_feature ? "" : ",") + f.substr(0, f.size() - 1) + ",\"i\":" + std::to_string(i) + "}";
-    first_feature = false;
+  first = true;
+  for (std::size_t i = 0; i < page.features.size(); ++i) {
+    const auto& f = page.features[i];
+    if (f.rings.empty()) continue;
+    data += std::string(first ? "" : ",") + "{\"i\":" + std::to_string(i) + ",\"id\":" + json_string(f.id) + ",\"t\":" + num(f.top) +
+            ",\"b\":" + num(f.bottom) + ",\"col\":\"" + kind_colour(f.kind) + "\",\"rings\":[";
+    for (std::size_t r = 0; r < f.rings.size(); ++r) {
+      data += r ? ",[" : "[";
+      for (std::size_t k = 0; k < f.rings[r].size(); ++k) data += (k ? "," : "") + num(f.rings[r][k].x) + "," + num(f.rings[r][k].y);
+      data += "]";
+    }
+    data += "]}";
+    first = false;
   }
   data += "]}";
   const std::string view3d =
       "<h2>3D view <span class=\"note\">drag: turn &#183; right drag or shift drag: pan &#183; wheel: zoom &#183; mm, "
       "axes at the program zero: X red, Y green, Z blue &#183; grid 10 mm</span></h2>\n"
       "<div class=\"controls\"><button data-view=\"iso\">iso</button> <button data-view=\"top\">top</button> "
-      "<button data-view=\"front\">front</button> <button data-view=\"side\">side</button> "
-      "<label><input type=\"checkbox\" id=\"show-rapids\" checked> rapid moves</label> "
-      "<label><input type=\"checkbox\" id=\"show-features\" checked> features</label> &#183; "
-      "<label>lowest Z shown <input type=\"range\" id=\"zcut\" min=\"" + num(zmin - 0.001) + "\" max=\"" + num(zmax) +
-      "\" step=\"any\" value=\"" + num(zmin - 0.001) + "\"> <output id=\"zcut-value\">all</output></label></div>\n"
+      "<button data-view=\"front\">front</button> <button data-view=\"side\">side</button></div>\n"
       "<div id=\"view3d\"></div><p id=\"view3d-status\" class=\"note\"></p>\n"
       "<script type=\"application/json\" id=\"ncb-data\">" + data + "</script>\n";
   // At the end of the body: the views are sized once the side panel is laid out.
@@ -399,24 +568,42 @@ std::string html_report(const HtmlReportInput& in) {
       "<script>\n" + std::string(three_js()) + "\n</script>\n<script>\n" + std::string(html_viewer_js()) + "\n</script>\n";
 
   std::string html;
-  html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>ncbridge CC2: " + escape(in.title) +
+  html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>ncbridge " + escape(in.level) + ": " + escape(in.title) +
           "</title>\n<style>\n"
           "body{margin:0;font:12px/1.35 system-ui,sans-serif;color:#222;display:flex;min-height:100vh}\n"
-          "main{flex:1 1 auto;padding:12px;overflow:auto}\n"
+          "main{flex:1 1 auto;padding:12px;overflow:auto;min-width:0}\n"
           "aside{flex:0 0 560px;padding:12px 16px;border-left:1px solid #ccc;background:#fafafa;overflow:auto;max-height:100vh;box-sizing:border-box}\n"
           "h1{font-size:16px;margin:0 0 8px}h2{font-size:14px;margin:14px 0 6px}\n"
           "table{border-collapse:collapse;width:100%;table-layout:fixed}td,th{border-bottom:1px solid #e2e2e2;padding:2px 4px;"
           "text-align:left;vertical-align:top;overflow-wrap:anywhere}\n"
           "ul{padding-left:18px;margin:4px 0}.legend{list-style:none;padding:0}\n"
-          ".sw{display:inline-block;width:12px;height:12px;margin-right:6px;vertical-align:middle;border:2px solid transparent;box-sizing:border-box}\n"
+          ".sw{display:inline-block;width:12px;height:12px;margin-right:6px;vertical-align:middle}\n"
+          ".ksw{display:inline-block;width:14px;height:10px;margin-right:5px;vertical-align:middle;border:2px dashed;box-sizing:border-box}\n"
+          ".lsw{display:inline-block;width:22px;height:0;margin-right:5px;vertical-align:middle;border-top:2px solid #1f77b4}\n"
+          ".rapidsw{border-top:1px dashed #888}.olsw{border-top:2px dashed #0047ab}\n"
+          ".toolbar{margin:0 0 6px;line-height:1.9}.toolbar label{margin-right:10px;white-space:nowrap}.tb-title{font-weight:600;margin-right:6px}\n"
           "#view3d{width:100%;height:520px;border:1px solid #ccc;background:#fff}.controls{margin:4px 0}.controls button{font:inherit}\n"
-          "tr[data-f]{cursor:pointer}tr.hl{background:#fff3b0}svg g.hl{stroke-width:5}svg polyline.dim{stroke-opacity:0.08}\n"
-          "#top{cursor:grab}svg{max-width:100%;height:auto}svg .label{font:bold 12px system-ui,sans-serif;text-anchor:middle;dominant-baseline:middle;"
-          "paint-order:stroke;stroke:#fff;stroke-width:3px}svg .axis{font:12px system-ui,sans-serif;fill:#666}\n"
-          ".note{color:#666}.setup{border:2px solid #c0392b;background:#fdecea;padding:4px 10px;margin-bottom:8px}\n"
-          ".setup h2{color:#c0392b;margin-top:4px}\n</style>\n</head>\n<body>\n<main>\n<h1>" +
-          escape(in.title) + " &#8212; top view <span class=\"note\">wheel: zoom &#183; drag: pan &#183; double click: whole view</span></h1>\n" +
-          svg + view3d + "</main>\n<aside>\n" + panel + "</aside>\n" + scripts + "</body>\n</html>\n";
+          "#features th:nth-child(1){width:20%}#features th:nth-child(2){width:14%}#features th:nth-child(3){width:11%}"
+          "#features th:nth-child(4){width:11%}#features th:nth-child(5){width:12%}\n"
+          "tr[data-f]{cursor:pointer}tr.hl{background:#fff3b0}li.hl{background:#fff3b0}\n"
+          "#drawing{position:relative;border:1px solid #ddd;background:#fff;overflow:hidden}\n"
+          "#top{cursor:grab;display:block;width:100%;height:auto}#top polyline,#top path,#top line,#top rect{vector-effect:non-scaling-stroke}\n"
+          "#top g.hl{stroke-width:5;stroke-dasharray:none}#top .dim{opacity:0.1}#top .off{display:none}\n"
+          "#top .label{font:bold 12px system-ui,sans-serif;text-anchor:middle;dominant-baseline:middle;paint-order:stroke;stroke:#fff;stroke-width:3px}\n"
+          "#top .axis{font:12px system-ui,sans-serif;fill:#666}\n"
+          "#scalebar{position:absolute;right:12px;bottom:10px;font:11px system-ui,sans-serif;background:rgba(255,255,255,.85);padding:2px 4px}\n"
+          "#scalebar div{height:5px;border:1.5px solid #222;border-top:none}\n"
+          "#pointer{position:absolute;right:10px;top:6px;font:11px ui-monospace,monospace;background:rgba(255,255,255,.85);padding:2px 4px}\n"
+          ".note{color:#666;font-weight:normal}.setup{border:2px solid #c0392b;background:#fdecea;padding:4px 10px;margin-bottom:8px}\n"
+          ".setup h2{color:#c0392b;margin-top:4px}\n"
+          "body.picture aside,body.picture h1,body.picture h2,body.picture .toolbar,body.picture .controls,body.picture #view3d,"
+          "body.picture #view3d-status,body.picture #pointer{display:none}body.picture main,body.picture3d main{padding:0}"
+          "body.picture #drawing{border:none}body.picture #top{width:100vw;height:100vh}\n"
+          "body.picture3d aside,body.picture3d h1,body.picture3d h2,body.picture3d .toolbar,body.picture3d .controls,"
+          "body.picture3d #drawing,body.picture3d #view3d-status{display:none}body.picture3d #view3d{width:100vw;height:100vh;border:none}\n</style>\n</head>\n<body>\n<main>\n<h1>" +
+          escape(in.title) + " &#8212; " + escape(in.level) + ", top view <span class=\"note\">mm &#183; wheel: zoom &#183; drag: pan &#183; double click: whole view</span></h1>\n" +
+          toolbar + "<div id=\"drawing\">" + svg + "<div id=\"scalebar\"><div></div><span></span></div><div id=\"pointer\"></div></div>\n" +
+          view3d + "</main>\n<aside>\n" + panel + "</aside>\n" + scripts + "</body>\n</html>\n";
   return html;
 }
 

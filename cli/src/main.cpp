@@ -33,8 +33,11 @@ int main(int argc, char** argv) {
   add_optimize_command(app, exit_code);
 #ifdef NCBRIDGE_HAVE_SERVICES
   add_up_command(app, exit_code);
+  add_down_command(app, exit_code);
   add_submit_command(app, exit_code);
   add_status_command(app, exit_code);
+  add_fetch_command(app, exit_code);
+  add_cancel_command(app, exit_code);
   add_controller_sim_command(app, exit_code);
   add_capture_command(app, exit_code);
 #endif

@@ -19,7 +19,11 @@
 #include "ncbridge/gcode_writer/dialect.hpp"
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/setup/tool_list.hpp"
+#include "ncbridge/toolpath_optimizer/canonical_bridge.hpp"
+#include "ncbridge/toolpath_optimizer/krl.hpp"
 #include "ncbridge/toolpath_optimizer/pipeline.hpp"
+#include "ncbridge/toolpath_optimizer/printer_reader.hpp"
+#include "optimize_html.hpp"
 #include "output_files.hpp"
 
 namespace ncbridge::cli {
@@ -38,6 +42,9 @@ struct OptimizeArguments {
   std::string to;
   std::string output;
   std::string report;
+  std::string html;
+  std::optional<std::size_t> html_layer;
+  std::optional<double> html_z;
   double tolerance = 0.025;
   double min_segment = 0;
   double max_radius = 10000;
@@ -133,6 +140,43 @@ std::string program_name(const std::string& output) {
   return toolpath_optimizer::krl_module_name(stem.empty() || stem == "-" ? "program" : stem);
 }
 
+// The --html page: the input and the written output read back as the deviation checker reads
+// them (each by its own front-end, loops expanded), one layer drawn.
+std::string optimize_page(const OptimizeArguments& args, const toolpath_optimizer::OptimizeRequest& request,
+                          const toolpath_optimizer::OptimizeResult& result, const std::string& written, const std::string& output_name) {
+  using namespace toolpath_optimizer;
+  PathRecorder before, after;
+  if (request.input_kind == InputKind::Cnc) {
+    CanonicalFrontEnd front_end(before);
+    interpreter::interpret_file(request.input, request.cnc, front_end);
+  } else {
+    read_printer_file(request.input, request.flavor, before);
+  }
+  if (request.output == OutputFormat::Krl) {
+    read_krl_text(written, output_name, after);
+  } else if (request.output == OutputFormat::Cnc) {
+    interpreter::Options reading;
+    interpreter::parse_dialect_name(gcode_writer::dialect_name(request.writer.dialect), reading.dialect);
+    reading.tools = request.writer.tools;
+    reading.require_program_end = false;
+    CanonicalFrontEnd front_end(after);
+    interpreter::interpret_text(written, output_name, reading, front_end);
+  } else {
+    read_printer_text(written, output_name, request.flavor, after);
+  }
+  OptimizeHtmlInput page;
+  page.program = fs::path(args.program).filename().string();
+  page.output = fs::path(output_name).filename().string();
+  page.before = &before.pieces;
+  page.after = &after.pieces;
+  page.result = &result;
+  page.tolerance = args.tolerance;
+  page.printer = request.input_kind == InputKind::Printer;
+  page.layer = args.html_layer;
+  page.z = args.html_z;
+  return optimize_html(page);
+}
+
 int run_optimize(const OptimizeArguments& args, Verbosity verbosity) {
   using namespace toolpath_optimizer;
   Feedback feedback(verbosity);
@@ -177,18 +221,30 @@ int run_optimize(const OptimizeArguments& args, Verbosity verbosity) {
     request.writer.tools = request.cnc.tools;
   }
   OutputFile* report = args.report.empty() ? nullptr : &outputs.add(args.report, "--report");
+  if (args.html.empty() && (args.html_layer || args.html_z)) throw UsageError("--html-layer and --html-z choose the layer --html draws");
+  if (args.html_layer && args.html_z) throw UsageError("--html-layer or --html-z, not both");
+  OutputFile* html = args.html.empty() ? nullptr : &outputs.add(args.html, "--html");
   request.output_name = out.display_name();
 
   Progress progress(feedback.progress_wanted());
   request.progress = [&progress](std::uint64_t line) { progress.set("optimizing: line " + std::to_string(line)); };
   OutputSinks sinks;
-  sinks.main = [&](std::string_view chunk) { out.write(chunk); };
+  std::string written;  // for the page
+  sinks.main = [&](std::string_view chunk) {
+    out.write(chunk);
+    if (html) written.append(chunk);
+  };
   sinks.data = [&](std::string_view chunk) {
     if (dat) dat->write(chunk);
   };
   const OptimizeResult result = optimize(request, sinks);
   progress.stop();
   if (report) report->write(report_json(request, result));
+  if (html) {
+    progress.set("drawing the page");
+    html->write(optimize_page(args, request, result, written, out.display_name()));
+    progress.stop();
+  }
   outputs.commit();
   feedback.summary(out.display_name() + ": " + summary_line(request, result));
   return exit_status::ok;
@@ -206,6 +262,9 @@ void add_optimize_command(CLI::App& app, int& exit_code) {
                   "Output: gcode (printer G-code, default for --flavor), krl, or a CNC dialect (default: the input's)");
   cmd->add_option("-o,--output", args->output, "Output file (KRL: NAME.src, and NAME.dat beside it)")->required();
   cmd->add_option("--report", args->report, "Also write a JSON report (docs/formats/optimize-report.md)");
+  cmd->add_option("--html", args->html, "Also write an HTML page: one layer before and after (docs/optimize.md)");
+  cmd->add_option("--html-layer", args->html_layer, "The layer the page draws, 1 = the first the program cuts (default: the middle one)");
+  cmd->add_option("--html-z", args->html_z, "The layer the page draws, by its Z in mm");
   cmd->add_option("--tolerance", args->tolerance, "Deviation band in mm, both ways (default 0.025)");
   cmd->add_option("--min-segment", args->min_segment, "Fold moves shorter than this (mm) into their neighbours");
   cmd->add_option("--max-radius", args->max_radius, "Largest arc radius in mm (default 10000)");

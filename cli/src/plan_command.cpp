@@ -19,6 +19,7 @@
 #include "html_report.hpp"
 #include "input_files.hpp"
 #include "output_files.hpp"
+#include "tool_source.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/gcode_writer/dialect.hpp"
 #include "ncbridge/gcode_writer/program_writer.hpp"
@@ -42,7 +43,7 @@ using Clock = std::chrono::steady_clock;
 
 struct PlanArguments {
   std::string part;
-  std::string tools;
+  ToolSource tools;
   std::string stock;
   std::string stock_step;
   std::string output;
@@ -79,6 +80,22 @@ std::string text_of(const std::array<double, 3>& v) {
   return buf;
 }
 
+// The shop's tools; a tool table's kinds read from its comments, a tool whose comment names none
+// said (the plan cannot choose it).
+setup::ToolList tools_for_planning(const ToolSource& source) {
+  setup::ToolList tools = source.read();
+  if (source.tool_table.empty()) return tools;
+  std::vector<int> unnamed;
+  tools = with_kinds_from_names(tools, unnamed);
+  for (int number : unnamed) {
+    const setup::Tool* t = tools.find(number);
+    print_warning({source.tool_table, 0, 0},
+                  "tool T" + std::to_string(number) + " (\"" + t->name +
+                      "\"): its comment names no kind of tool (drill, end mill, face mill, ...); the plan does not use it");
+  }
+  return tools;
+}
+
 int run_plan(const PlanArguments& args) {
   const auto t0 = Clock::now();
   pr::ReadOptions read_options;
@@ -91,7 +108,8 @@ int run_plan(const PlanArguments& args) {
   if (!args.stock.empty() && !args.stock_step.empty()) throw UsageError("give --stock or --stock-step, not both");
   // Every input and output checked before the work starts; the outputs appear together at the end.
   require_input_file(args.part, "part");
-  require_input_file(args.tools, "--tools");
+  if (!args.tools.given()) throw UsageError("the shop's tools are needed: --tools or --tool-table");
+  args.tools.check();
   if (!args.stock.empty()) require_input_file(args.stock, "--stock");
   if (!args.stock_step.empty()) require_input_file(args.stock_step, "--stock-step");
   OutputSet outputs;
@@ -99,12 +117,12 @@ int run_plan(const PlanArguments& args) {
   OutputFile* report_file = args.report.empty() ? nullptr : &outputs.add(args.report, "--report");
   OutputFile* html_file = args.html.empty() ? nullptr : &outputs.add(args.html, "--html");
   OutputFile* gcode_file = args.gcode.empty() ? nullptr : &outputs.add(args.gcode, "--gcode");
-  for (const std::string* input : {&args.part, &args.tools, &args.stock, &args.stock_step}) {
+  for (const std::string* input : {&args.part, &args.tools.file(), &args.stock, &args.stock_step}) {
     if (!input->empty()) outputs.protect(*input);
   }
   options.material = *material;
   options.security_clearance = args.security_clearance;
-  const setup::ToolList tools = setup::read_tool_list(args.tools);
+  const setup::ToolList tools = tools_for_planning(args.tools);
 
   pr::Part part = pr::read_part_file(args.part, read_options);
   std::string stock_source;
@@ -207,29 +225,45 @@ int run_plan(const PlanArguments& args) {
                             {"total", ms(Clock::now() - t0)}};
     report_text = report.dump(2) + "\n";
   }
+  // The plan's toolpaths, generated (as `convert --level cc1` does) for the program and the page.
+  // The program needs them (a refusal leaves every output unwritten); the page without a program
+  // shows the plan and says why they are missing.
+  std::optional<stepnc::Project> cc1;
+  std::vector<std::string> page_warnings = warnings;
+  if (gcode_file || !args.html.empty()) {
+    std::vector<std::string> notes;
+    try {
+      cc1 = generate_cc1(plan.project, *stock, args.part, notes);
+    } catch (const InputError& e) {
+      if (gcode_file) throw;
+      page_warnings.push_back("toolpaths not generated: " + e.message());
+    }
+    if (gcode_file) {
+      for (const auto& n : notes) print_warning({args.part, 0, 0}, n);
+    }
+    page_warnings.insert(page_warnings.end(), notes.begin(), notes.end());
+  }
   if (!args.html.empty()) {
     HtmlReportInput page;
     page.title = std::filesystem::path(args.part).filename().string() + " (planned)";
-    page.cc2 = &cc2;
-    page.warnings = warnings;
+    page.stock = *stock;
+    page.model = &plan.project;
+    if (cc1) page.toolpaths = &*cc1;
+    page.warnings = page_warnings;
     html_text = html_report(page);
   }
 
-  // The program: the plan's toolpaths generated (as `convert --level cc1` does) and written
-  // (as `gcode` does); any refusal leaves every output unwritten.
+  // The program: the generated toolpaths written (as `gcode` does).
   std::string program_text;
   if (gcode_file) {
-    std::vector<std::string> notes;
-    const stepnc::Project cc1 = generate_cc1(plan.project, *stock, args.part, notes);
-    for (const auto& n : notes) print_warning({args.part, 0, 0}, n);
-    gcode_writer::Options options;
-    options.dialect = *gcode_writer::parse_dialect(args.to);
-    options.tools = gcode_writer::stepnc_tools(cc1);
+    gcode_writer::Options writer_options;
+    writer_options.dialect = *gcode_writer::parse_dialect(args.to);
+    writer_options.tools = gcode_writer::stepnc_tools(*cc1);
     std::string name = std::filesystem::path(gcode_file->file_name()).stem().string();
     for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : '_';
-    if (!name.empty()) options.program_name = name;
-    gcode_writer::ProgramWriter writer(options, [&](std::string_view piece) { program_text += piece; });
-    gcode_writer::interpret_stepnc(cc1, args.part, gcode_writer::StepncOptions{}, writer);
+    if (!name.empty()) writer_options.program_name = name;
+    gcode_writer::ProgramWriter writer(writer_options, [&](std::string_view piece) { program_text += piece; });
+    gcode_writer::interpret_stepnc(*cc1, args.part, gcode_writer::StepncOptions{}, writer);
   }
 
   stp.write(cc2_text);
@@ -246,7 +280,7 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<PlanArguments>();
   CLI::App* cmd = app.add_subcommand("plan", "Plan a STEP part (AP224 features or a B-rep) into an ISO 14649 CC2 file");
   cmd->add_option("part", args->part, "STEP part: AP224 (features) or AP203/AP214/AP242 (B-rep)")->required();
-  cmd->add_option("--tools", args->tools, "Tool list (JSON or YAML, docs/formats/tools.md)")->required();
+  add_tool_source_options(*cmd, args->tools, "; a tool table's comments name each tool's kind (docs/plan.md)");
   cmd->add_option("--stock", args->stock, "Stock block (docs/formats/stock.md); its part_bbox_min places the part");
   cmd->add_option("--stock-step", args->stock_step, "Stock as a STEP solid (its bounding box)");
   cmd->add_option("-o,--output", args->output, "CC2 Part 21 file to write")->required();
@@ -254,7 +288,7 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--to", args->to, "Dialect of --gcode (default rs274ngc)")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain"}));
   cmd->add_option("--report", args->report, "Also write a JSON report (docs/plan.md)");
-  cmd->add_option("--html", args->html, "Also write an HTML page of the planned features");
+  cmd->add_option("--html", args->html, "Also write an HTML page of the planned features and their generated toolpaths");
   cmd->add_option("--setup", args->setup, "The part's side facing the spindle: +z (default), -z, +x, -x, +y, -y");
   cmd->add_option("--part-offset", args->part_offset, "Move the part by X,Y,Z mm into the program frame")->expected(3)->delimiter(',');
   cmd->add_option("--material", args->material, "Work material for default cutting data: steel, aluminium, stainless, cast_iron, brass, plastic");

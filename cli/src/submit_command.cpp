@@ -24,13 +24,16 @@
 #include <string>
 #include <vector>
 
+#include "client_bus.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "input_files.hpp"
 #include "output_files.hpp"
 #include "tool_source.hpp"
 #include "ncbridge/bus/participant.hpp"
-#include "ncbridge/bus/writer.hpp"
+#include "ncbridge/bus/reader.hpp"
+#include "ncbridge/bus/routed_writer.hpp"
+#include "ncbridge/bus/topics.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/service/job_watch.hpp"
 #include "ncbridge/setup/stock.hpp"
@@ -55,6 +58,7 @@ struct SubmitArguments {
   std::string subroutine_path;
   std::optional<std::uint32_t> domain;
   bool wait = false;
+  bool detach = false;
   double timeout_s = 600;
 };
 
@@ -151,11 +155,40 @@ const char* state_name(wire::JobState s) {
     case wire::JobState::Done: return "done";
     case wire::JobState::Error: return "error";
     case wire::JobState::Delivered: return "delivered";
+    case wire::JobState::Cancelled: return "cancelled";
   }
   return "?";
 }
 
-void print_job_error(const wire::JobStatus& e) { print_error(e.where, e.message + " (" + e.stage + ")"); }
+void print_job_error(const wire::JobStatus& e) {
+  if (e.state == wire::JobState::Cancelled) print_error("job " + e.job_id + " was cancelled");
+  else print_error(e.where, e.message + " (" + e.stage + ")");
+}
+
+// --detach: until the first stage has accepted every job: the worker that owns it has all of its
+// input and says so on the status topic (running, or an error at once). Then the job no longer
+// needs this process (docs/deployment.md, "What survives what").
+// Only statuses are read: the files stay on the bus for `ncbridge fetch`.
+int wait_for_acceptance(bus::Reader& statuses, const std::vector<std::string>& ids, std::chrono::milliseconds timeout) {
+  std::set<std::string> waiting(ids.begin(), ids.end());
+  std::size_t rejected = 0;
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!waiting.empty() && std::chrono::steady_clock::now() < deadline) {
+    for (const bus::Received& r : statuses.take(std::chrono::milliseconds(100), 4096)) {
+      if (!r.has_data || !waiting.contains(r.envelope.key) || r.envelope.subkey != bus::kStageInterpreter) continue;
+      const wire::JobStatus s = wire::decode_status(r.envelope.payload);
+      if (s.state == wire::JobState::Error) {
+        print_job_error(s);
+        ++rejected;
+      }
+      waiting.erase(s.job_id);
+    }
+  }
+  for (const std::string& id : waiting)
+    print_error("job " + id + " not accepted by an interpreter within " + std::to_string(timeout.count() / 1000) + " s (--timeout)");
+  if (!waiting.empty()) return exit_status::service_unavailable;
+  return rejected > 0 ? exit_status::input_error : exit_status::ok;
+}
 
 std::string stem_of(const std::string& program) { return program == "-" ? "stdin" : fs::path(program).stem().string(); }
 
@@ -167,8 +200,9 @@ int run_submit(const SubmitArguments& args) {
   if (!single && !args.job_id.empty()) throw UsageError("--job-id: only with one program");
   if (!single && !args.output.empty()) throw UsageError("-o: only with one program (several: --output-dir)");
   if (!args.output.empty() && !args.output_dir.empty()) throw UsageError("-o and --output-dir: give one");
+  if (args.wait && args.detach) throw UsageError("--wait and --detach: give one");
   if (!args.wait && (!args.output.empty() || !args.output_dir.empty()))
-    throw UsageError("-o and --output-dir need --wait (the files are written when the jobs end)");
+    throw UsageError("-o and --output-dir need --wait (the files are written when the jobs end; later: ncbridge fetch JOB)");
   if (args.wait && single && args.output.empty() && args.output_dir.empty())
     throw UsageError("--wait needs -o or --output-dir");
   if (args.wait && !single && args.output_dir.empty()) throw UsageError("--wait with several programs needs --output-dir");
@@ -217,17 +251,19 @@ int run_submit(const SubmitArguments& args) {
     jobs.push_back(std::move(job));
   }
 
-  bus::BusConfig config = bus::config_from_environment();
-  if (args.domain) config.domain_id = *args.domain;
-  bus::Participant participant(config);
+  const ClientBus bus = client_bus(args.domain);
+  bus::Participant participant(bus.config);
   std::vector<std::string> ids;
   for (const wire::Job& j : jobs) ids.push_back(j.job_id);
-  service::JobWatch watch(participant, ids);  // before publishing: nothing is missed
-  bus::Writer programs(participant, bus::Topic::Programs);
+  // Before publishing: nothing is missed.
+  std::optional<service::JobWatch> watch;
+  std::optional<bus::Reader> statuses;
+  if (args.wait) watch.emplace(participant, ids);
+  if (args.detach) statuses.emplace(participant, bus::Topic::Status);
+  bus::RoutedWriter programs(participant, bus::Topic::Programs);  // each job to its interpreter only
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(args.timeout_s * 1000));
   if (!programs.wait_for_readers(1, std::min(timeout, std::chrono::milliseconds(10'000)))) {
-    throw ServiceUnavailable("no interpreter service on DDS domain " + std::to_string(participant.domain_id()) +
-                             " (is `ncbridge up` running, with the CYCLONEDDS_URI it printed?)");
+    throw ServiceUnavailable(no_service_message(bus, "interpreter"));
   }
   // The job ids go to standard output, unless the result does.
   std::FILE* ids_to = to_stdout ? stderr : stdout;
@@ -237,6 +273,7 @@ int run_submit(const SubmitArguments& args) {
   }
   std::fflush(ids_to);
   jobs.clear();  // the writer holds them now
+  if (args.detach) return wait_for_acceptance(*statuses, ids, timeout);
   if (!args.wait) {
     // A job's only copy is this process's writer until an interpreter has it.
     programs.wait_for_acks(timeout);
@@ -273,7 +310,7 @@ int run_submit(const SubmitArguments& args) {
     if (s.state == wire::JobState::Progress) std::fprintf(stderr, " %3.0f%%", s.progress * 100);
     std::fprintf(stderr, "%s", tty ? "" : "\n");
   };
-  const std::set<std::string> late = watch.wait_all(timeout, on_piece, on_over, on_status);
+  const std::set<std::string> late = watch->wait_all(timeout, on_piece, on_over, on_status);
   for (const std::string& id : late) print_error("job " + id + " not done after " + std::to_string(static_cast<long long>(args.timeout_s)) + " s (--timeout)");
   if (!single) std::fprintf(stderr, "%zu jobs: %zu done, %d failed, %zu not done\n", ids.size(), ids.size() - failed - late.size(), failed, late.size());
   if (!late.empty()) return exit_status::service_unavailable;
@@ -297,8 +334,11 @@ void add_submit_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--output-dir", args->output_dir, "Directory for the Part 21 files (with --wait), named PROGRAM-STEM.stp; created when missing");
   cmd->add_option("--job-id", args->job_id, "Job id, one program only (default: program name + random suffix)");
   cmd->add_option("--subroutine-path", args->subroutine_path, "Directories searched for o<name> call files, ':'-separated");
-  cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else 0)")->check(CLI::Range(0, 230));
+  cmd->add_option("--domain", args->domain, "DDS domain id (default: NCBRIDGE_DDS_DOMAIN, else the running ncbridge up's)")->check(CLI::Range(0, 230));
   cmd->add_flag("--wait", args->wait, "Show progress and write the results");
+  cmd->add_flag("--detach", args->detach,
+                "Return once the interpreters have accepted every job; the jobs go on without this client "
+                "(their files: ncbridge fetch JOB, or up --output-dir)");
   cmd->add_option("--timeout", args->timeout_s, "Seconds to wait (default 600)");
   cmd->callback([args, &exit_code]() { exit_code = run_submit(*args); });
 }

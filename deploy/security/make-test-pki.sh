@@ -33,6 +33,11 @@ later=$(date -u -d '+30 days' +%Y-%m-%dT%H:%M:%S)
         <domains><id_range><min>0</min><max>230</max></id_range></domains>
         <publish><topics><topic>ncbridge/*</topic></topics></publish>
         <subscribe><topics><topic>ncbridge/*</topic></topics></subscribe>
+        <!-- A job's input goes to its owner in the owner's partition, and the statuses ending
+             a job go to the workers in ncbridge.over (docs/deployment.md): a rule without
+             partitions allows only the default one. -->
+        <publish><topics><topic>ncbridge/*</topic></topics><partitions><partition>ncbridge.*</partition></partitions></publish>
+        <subscribe><topics><topic>ncbridge/*</topic></topics><partitions><partition>ncbridge.*</partition></partitions></subscribe>
       </allow_rule>
       <default>DENY</default>
     </grant>

@@ -30,7 +30,7 @@ JobStatus decode_status(std::string_view bytes) {
   s.job_id = m.job_id();
   s.stage = m.stage();
   s.worker_id = m.worker_id();
-  s.state = enum_in_range<JobState>(m.state(), 6, "job status", "state");
+  s.state = enum_in_range<JobState>(m.state(), 7, "job status", "state");
   s.progress = m.progress();
   s.message = m.message();
   s.where = {m.where().file(), m.where().line(), m.where().column()};

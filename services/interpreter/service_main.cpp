@@ -27,6 +27,8 @@ using namespace ncbridge;
 // blocks carry neither).
 struct LiveSetup {
   std::string tools;
+  std::string tool_table;  // a LinuxCNC tool table instead of `tools`
+  std::string tool_table_units = "mm";
   std::string stock;
   std::string dialect = "rs274ngc";
   std::string level = "cc1";
@@ -152,6 +154,11 @@ int main(int argc, char** argv) {
   service::add_service_options(app, options);
   LiveSetup live;
   app.add_option("--live-tools", live.tools, "Tool list for live-capture runs (JSON/YAML)")->check(CLI::ExistingFile);
+  app.add_option("--live-tool-table", live.tool_table, "LinuxCNC tool table (.tbl) for live-capture runs, instead of --live-tools")
+      ->check(CLI::ExistingFile)
+      ->excludes("--live-tools");
+  app.add_option("--live-tool-table-units", live.tool_table_units, "Units of the tool table values (default mm)")
+      ->check(CLI::IsMember({"mm", "inch"}));
   app.add_option("--live-stock", live.stock, "Stock for live-capture runs (JSON/YAML)")->check(CLI::ExistingFile);
   app.add_option("--live-dialect", live.dialect, "Dialect of live-capture runs")
       ->check(CLI::IsMember({"rs274ngc", "fanuc", "mach3", "siemens840d", "heidenhain", "auto"}));
@@ -162,6 +169,10 @@ int main(int argc, char** argv) {
     wire::Job live_job;
     live_job.dialect = dialect_of(live.dialect);
     if (!live.tools.empty()) live_job.tools = setup::read_tool_list(live.tools).tools();
+    if (!live.tool_table.empty()) {
+      const auto units = live.tool_table_units == "inch" ? setup::LengthUnits::Inches : setup::LengthUnits::Millimeters;
+      live_job.tools = setup::read_linuxcnc_tool_table(live.tool_table, units).tools();
+    }
     if (!live.stock.empty()) live_job.stock = setup::read_stock(live.stock);
     live_job.level = live.level == "cc2" ? wire::ConformanceClass::Cc2 : wire::ConformanceClass::Cc1;
     service::StageSpec spec;

@@ -87,6 +87,14 @@ TEST(WireStatus, ErrorCarriesTheSourceLocation) {
   EXPECT_TRUE(q.where.file.empty());
 }
 
+TEST(WireStatus, CancelledRoundTripsAndAStateBeyondItIsRefused) {
+  const JobStatus c{"j2", "client", "", JobState::Cancelled, 0, "cancelled (ncbridge cancel)", {}};
+  const JobStatus d = decode_status(encode_status(c));
+  EXPECT_EQ(d.state, JobState::Cancelled);
+  EXPECT_EQ(d.message, c.message);
+  EXPECT_THROW(decode_status(std::string("\x20\x07", 2)), InputError);  // state = 7
+}
+
 TEST(WireWorker, RoundTrip) {
   const WorkerInfo w{"interpreter", "host-a/1234", "host-a", 1234, 1716000000123, {"j1", "j7"}};
   EXPECT_EQ(decode_worker(encode_worker(w)), w);

@@ -179,8 +179,8 @@ TEST(ConvertOutputs, ABadProgramLeavesNoOutputAndOldFilesAsTheyWere) {
   put(dir / "out.stp", "old stp");
   put(dir / "out.json", "old json");
   for (const std::string level : {"cc1", "cc2"}) {
-    std::vector<std::string> args{"--level", level, "-o", (dir / "out.stp").string(), "--report", (dir / "out.json").string()};
-    if (level == "cc2") args.insert(args.end(), {"--html", (dir / "out.html").string()});
+    const std::vector<std::string> args{"--level", level, "-o", (dir / "out.stp").string(), "--report", (dir / "out.json").string(),
+                                        "--html", (dir / "out.html").string()};
     const ProgramRun r = run(convert_args((dir / "bad.ngc").string(), args));
     EXPECT_EQ(r.exit_code, 1) << r.err;
     EXPECT_NE(r.err.find("ncbridge: error: " + (dir / "bad.ngc").string() + ":"), std::string::npos) << r.err;

@@ -89,9 +89,6 @@ TEST(CommandLine, MissingOrBadValuesAreUsageErrors) {
   check({{"convert", program}, 2, "convert: --output is required (see ncbridge convert --help)"});
   check({{"convert", program, "-o", "x.stp", "--level", "cc3"}, 2, "convert: --level: cc3 not in {cc1,cc2}"});
   check({{"convert", program, "-o", "x.stp"}, 2, "converting a program needs --tools (or --tool-table) and --stock"});
-  check({{"convert", program, "--tools", (kPlate / "tools.json").string(), "--stock", (kPlate / "stock.json").string(), "-o",
-          "x.stp", "--html", "x.html"},
-         2, "--html needs --level cc2"});
   check({{"diff", "a.stp", "b.stp", "--tolerance", "-1"}, 2, "--tolerance must be a length of 0 or more"});
   check({{"diff", "a.stp", "b.stp", "--tolerance", "nan"}, 2, "--tolerance"});
   check({{"canon", program, "--tools", "a.json", "--tool-table", "b.tbl"}, 2, "give one tool list"});

@@ -50,8 +50,9 @@ if [[ -f /usr/share/bash-completion/bash_completion ]]; then
     source "$1/share/bash-completion/completions/ncbridge"
     t() { COMP_WORDS=("$@"); COMP_CWORD=$((${#COMP_WORDS[@]} - 1)); COMP_LINE="${COMP_WORDS[*]}"; COMP_POINT=${#COMP_LINE}
           COMPREPLY=(); _ncbridge; echo "${COMPREPLY[*]}"; }
-    t ncbridge conv; t ncbridge convert --lev; t ncbridge convert --level ""; t ncbridge -q diff --tol' _ "$P")
-  [[ $completions == $'convert\n--level\ncc1 cc2\n--tolerance' ]] || fail "bash completion gave: $completions"
+    t ncbridge conv; t ncbridge convert --lev; t ncbridge convert --level ""; t ncbridge -q diff --tol
+    t ncbridge dow; t ncbridge submit --det; t ncbridge plan --tool-table-u' _ "$P")
+  [[ $completions == $'convert\n--level\ncc1 cc2\n--tolerance\ndown\n--detach\n--tool-table-units' ]] || fail "bash completion gave: $completions"
 elif [[ ${CI:-} == true ]]; then
   fail "bash-completion is not installed (scripts/install-deps.sh --tests)"
 fi

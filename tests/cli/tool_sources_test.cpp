@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -98,6 +100,52 @@ TEST(ToolSources, OneToolListAndClearErrors) {
                                              "--tools", (kPlate / "tools.tbl").string(), "-o", (dir / "x.stp").string()});
   EXPECT_EQ(table_as_list.exit_code, 1) << table_as_list.err;
   EXPECT_NE(table_as_list.err.find("give it with --tool-table"), std::string::npos) << table_as_list.err;
+  EXPECT_FALSE(fs::exists(dir / "x.stp"));
+}
+
+// plan takes a LinuxCNC tool table: the tools' kinds read from their comments, the bracket is
+// planned as with examples/part/tools.json (the same workingsteps, operations, features and
+// tools); a tool whose comment names no kind is said in a warning, and not used.
+TEST(ToolSources, PlanWithAToolTablePlansAsWithTheToolList) {
+  const fs::path dir = fresh_directory("plan_tool_table");
+  const fs::path part = fs::path(NCBRIDGE_SOURCE_DIR) / "examples" / "part";
+  std::ofstream(dir / "shop.tbl") << "T1 P1 D50 Z50 ;FACE_MILL_D50\n"
+                                     "T2 P2 D16 Z75 ;END_MILL_D16\n"
+                                     "T3 P3 D12 Z70 ;end mill 12\n"
+                                     "T4 P4 D6 Z60 ;Endmill 6mm\n"
+                                     "T5 P5 D10 Z60 ;SPOT_D10\n"
+                                     "T6 P6 D6 Z70 ;DRILL_D6\n"
+                                     "T7 P7 D8.5 Z90 ;drill 8.5\n"
+                                     "T8 P8 D11 Z100 ;DRILL-D11\n"
+                                     "T9 P9 D25 Z90 ;END_MILL_D25\n"
+                                     "T10 P10 D3 Z40 ;SPARE\n";
+  const auto plan = [&](const std::string& name, std::vector<std::string> tools) {
+    std::vector<std::string> args{"plan", (part / "bracket.step").string(), "--stock", (part / "stock.json").string(),
+                                  "-o", (dir / (name + ".stp")).string(), "--report", (dir / (name + ".json")).string()};
+    args.insert(args.end(), tools.begin(), tools.end());
+    const ProgramRun r = ncbridge(args);
+    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    std::vector<std::string> steps;
+    const nlohmann::json report = nlohmann::json::parse(std::ifstream(dir / (name + ".json")));
+    for (const auto& w : report.at("workingsteps")) {
+      std::string tool = w["tool"].get<std::string>();
+      tool = tool.substr(0, tool.find(' '));  // the number: the names differ
+      steps.push_back(w["id"].get<std::string>() + " " + w["operation"].get<std::string>() + " " + tool);
+    }
+    return std::make_pair(steps, r.err);
+  };
+  const auto [with_table, table_err] = plan("table", {"--tool-table", (dir / "shop.tbl").string()});
+  const auto [with_list, list_err] = plan("list", {"--tools", (part / "tools.json").string()});
+  EXPECT_GT(with_list.size(), 10u);
+  EXPECT_EQ(with_table, with_list);
+  EXPECT_NE(table_err.find("shop.tbl: tool T10 (\"SPARE\"): its comment names no kind of tool"), std::string::npos) << table_err;
+  EXPECT_EQ(table_err.find("T3"), std::string::npos) << table_err;
+
+  const ProgramRun both = ncbridge({"plan", (part / "bracket.step").string(), "--tools", (part / "tools.json").string(),
+                                    "--tool-table", (dir / "shop.tbl").string(), "-o", (dir / "x.stp").string()});
+  EXPECT_EQ(both.exit_code, 2) << both.err;
+  const ProgramRun none = ncbridge({"plan", (part / "bracket.step").string(), "-o", (dir / "x.stp").string()});
+  EXPECT_EQ(none.exit_code, 2) << none.err;
   EXPECT_FALSE(fs::exists(dir / "x.stp"));
 }
 

@@ -289,6 +289,17 @@ TEST(BoxIndex, CandidatesHoldEveryOverlappingBoxInOrder) {
       }
     }
   }
+  // The latest ids near a box: the highest of the candidates, highest first, at most as many as asked.
+  for (std::size_t q = 0; q < 50; ++q) {
+    const double x = next(), y = next();
+    const fr::Box2 query{x, y, x + next() / 5, y + next() / 5};
+    const auto all = index.candidates(query);
+    for (std::size_t limit : {std::size_t{0}, std::size_t{1}, std::size_t{5}, std::size_t{1000}}) {
+      const auto latest = index.latest(query, limit);
+      const std::vector<std::size_t> expected(all.rbegin(), all.rbegin() + static_cast<std::ptrdiff_t>(std::min(limit, all.size())));
+      EXPECT_EQ(latest, expected) << "query " << q << " limit " << limit;
+    }
+  }
   // A point on a cell line finds the boxes on both sides of it.
   fr::BoxIndex lines(10.0);
   lines.insert(0, {0, 0, 10, 10});

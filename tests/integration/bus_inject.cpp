@@ -13,7 +13,7 @@
 
 #include "ncbridge/bus/participant.hpp"
 #include "ncbridge/bus/reader.hpp"
-#include "ncbridge/bus/writer.hpp"
+#include "ncbridge/bus/routed_writer.hpp"
 #include "ncbridge/canonical/proto_codec.hpp"
 #include "ncbridge/service/canonical_stream.hpp"
 #include "ncbridge/wire/job.hpp"
@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
   if (mode == "truncated-batch") topic = bus::Topic::Canonical;
   if (mode == "wrong-type") topic = argc > 3 && std::string_view(argv[3]) == "features" ? bus::Topic::Features
                                                                                         : bus::Topic::Workingsteps;
-  bus::Writer writer(participant, topic);
+  bus::RoutedWriter writer(participant, topic);
   if (!writer.wait_for_readers(1, std::chrono::seconds(10))) {
     std::fprintf(stderr, "bus_inject: no reader of the topic\n");
     return 3;

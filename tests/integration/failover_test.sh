@@ -53,6 +53,11 @@ while read -r prog tools stock; do
 done < "$WORK/programs/list"
 files=$(ls -A "$WORK/out" | wc -l)
 [[ $files == 20 ]] || fail "the writers' folder holds $files entries, not 20: $(ls -A "$WORK/out")"
+# Inputs go to their owner only: the killed workers' jobs were sent again to the survivors, by
+# the clients (programs) and the interpreters (canonical).
+resent=$(grep -h "sent again" "$WORK"/*.log | wc -l)
+(( resent > 0 )) || fail "no job input was sent again to a survivor"
+echo "$resent job inputs sent again to a survivor"
 taken=$(grep -h "done in" "$WORK/interpreter-2.log" | wc -l)
 echo "surviving interpreter ran $taken jobs; surviving cc1_builder ran $(grep -h "done in" "$WORK/cc1-builder-2.log" | wc -l)"
 echo "PASS: $same of 20 jobs complete and byte-identical after killing a worker of two stages"

@@ -12,7 +12,7 @@ timeout 120 "$BIN/ncbridge" convert "$part/part.nc" --tools "$part/tools.json" -
   -o "$WORK/part.stp" 2> "$WORK/convert-cc2.log"
 
 mkdir -p "$WORK/services"   # same file names as convert's: FILE_NAME.name is the output's name
-start up "$BIN/ncbridge" up --workers 1
+start up "$BIN/ncbridge" up --workers 1 --log-level info   # the stages' own lines, read below
 wait_workers 1
 
 timeout 120 "$BIN/ncbridge" submit "$WORK/long.ngc" --tools "$TOOLS_PAPER" --stock "$STOCK_PAPER" --job-id long \

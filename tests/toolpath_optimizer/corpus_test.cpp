@@ -10,6 +10,8 @@
 #include <regex>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "ncbridge/interpreter/dialect_detect.hpp"
 #include "ncbridge/toolpath_optimizer/pipeline.hpp"
 #include "support.hpp"
@@ -88,6 +90,39 @@ TEST_P(ArcsCorpus, WithinTheBandAndAtMostArcWeldersBlocks) {
   }
   std::cout << file << " @" << tolerance << ": " << result.motion_blocks_in << " -> " << result.motion_blocks_out
             << " motion blocks, " << result.stats.arcs << " arcs, largest deviation " << d.largest() << "\n";
+}
+
+// The checker streams printer output: it holds the input the output has not yet caught up with,
+// not the file, so four copies of a file in one are checked holding as much as one copy.
+TEST(ArcsCorpusMemory, TheCheckHoldsAsMuchForFourCopiesAsForOne) {
+  const fs::path scratch = fs::temp_directory_path() / ("ncbridge-optimize-memory-" + std::to_string(::getpid()));
+  fs::create_directories(scratch);
+  const std::string one = testing::read_file(kArcs / "slic3r129_cylinder.gcode");
+  std::size_t held[2] = {0, 0};
+  for (int copies : {1, 4}) {
+    const fs::path file = scratch / ("copies" + std::to_string(copies) + ".gcode");
+    {
+      std::ofstream out(file, std::ios::binary);
+      for (int i = 0; i < copies; ++i) out << one;
+    }
+    OptimizeRequest request;
+    request.input = file;
+    request.output_name = file.filename().string();
+    std::size_t written = 0;
+    OutputSinks sinks;
+    sinks.main = [&](std::string_view chunk) { written += chunk.size(); };
+    const OptimizeResult result = optimize(request, sinks);
+    ASSERT_TRUE(result.deviation.has_value());
+    EXPECT_TRUE(result.deviation->passed(0.025)) << result.deviation->largest();
+    EXPECT_EQ(result.deviation->input_motions, copies * (result.deviation->input_motions / copies));
+    held[copies == 1 ? 0 : 1] = result.check_pieces_held;
+    std::cout << copies << " copies: " << result.deviation->input_motions << " input pieces, at most "
+              << result.check_pieces_held << " held\n";
+  }
+  fs::remove_all(scratch);
+  EXPECT_GT(held[0], 0u);
+  EXPECT_LE(held[1], held[0] + held[0] / 10);
+  EXPECT_LT(held[0], 5000u);  // the file has 16,169 motions; what is held is a run and 8 KiB of output
 }
 
 // The same files to KUKA KRL with loops: the .src read back by the KRL reader stays in the band.

@@ -74,5 +74,46 @@ TEST(DeviationChecker, ALostRetractionOrAnEndNotOnTheInputFails) {
   EXPECT_FALSE(check("G1 X0 Y0 F1800\nG1 X10 Y0 E1\nG1 X20 Y0 E2\nG1 E1\n").passed(0.025));  // stops short
 }
 
+// Fed as a pipeline feeds it (each output piece soon after the input it stands for), the checker
+// finds what it finds given both paths whole, and holds a few pieces, not the path.
+TEST(DeviationChecker, StreamingHoldsOnlyWhatTheOutputHasNotCaughtUpWith) {
+  std::string input = "G1 X0 Y0 F1800\n", output = input;
+  double e = 0;
+  for (int i = 1; i <= 3000; ++i) {
+    // Zigzag pairs of collinear moves; the output merges each pair.
+    const double y = (i / 2) % 2 ? 5 : 0;
+    e += 0.5;
+    input += "G1 X" + std::to_string(i) + " Y" + std::to_string(y * (i % 2 ? 0.5 : 1)) + " E" + std::to_string(e) + "\n";
+    if (i % 2 == 0) output += "G1 X" + std::to_string(i) + " Y" + std::to_string(y) + " E" + std::to_string(e) + "\n";
+  }
+  const auto in = testing::printer_path(input), out = testing::printer_path(output);
+  DeviationOptions o;
+  o.tolerance = 2.6;
+  const DeviationReport whole = check_deviation(in, out, o);
+  DeviationChecker streaming(o);
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    streaming.input(in[i]);
+    if (i % 2 == 1) streaming.output(out[j++]);
+  }
+  while (j < out.size()) streaming.output(out[j++]);
+  const DeviationReport streamed = streaming.finish();
+  EXPECT_TRUE(whole.passed(o.tolerance)) << (whole.problems.empty() ? "" : whole.problems.front());
+  EXPECT_EQ(streamed.spans, whole.spans);
+  EXPECT_EQ(streamed.largest(), whole.largest());
+  EXPECT_EQ(streamed.problem_count, whole.problem_count);
+  EXPECT_EQ(streamed.layer_count, whole.layer_count);
+  EXPECT_LE(streaming.most_held(), 4u);
+  // An output that leaves the input is found the same way streaming.
+  DeviationChecker wrong(o);
+  for (const auto& p : in) wrong.input(p);
+  auto bad = out;
+  bad[700].end.y += 1;
+  for (const auto& p : bad) wrong.output(p);
+  const DeviationReport r = wrong.finish();
+  EXPECT_FALSE(r.passed(o.tolerance));
+  EXPECT_EQ(r.problems, check_deviation(in, bad, o).problems);
+}
+
 }  // namespace
 }  // namespace ncbridge::toolpath_optimizer

@@ -175,12 +175,35 @@ TEST(Fit, ShortMovesAreFoldedWhereTheBandAllows) {
   EXPECT_EQ(moves.size(), 5u);
 }
 
+TEST(Fit, ANoisyPolygonIsOneArcWhenItsPiecesStayNearTheirSegments) {
+  // 56 segments over a quarter circle of radius 20 (sagitta 0.002 mm), every other vertex 0.004
+  // mm off the circle, out and in. Compared point for point (an arc piece and its segment at
+  // equal fractions) the arc would be off by up to sagitta + 0.004 > 0.005; measured as the
+  // distance of the arc piece to its segment (about sagitta + 0.002 at most) it stays inside
+  // 0.005, and the independent checker agrees.
+  std::vector<Vec3> p;
+  for (int i = 0; i <= 56; ++i) {
+    const double a = kPi / 2 * i / 56, r = 20 + 0.004 * std::sin(i * kPi / 2);
+    p.push_back({r * std::cos(a), r * std::sin(a), 0.2});
+  }
+  const auto v = vertices(p, 0.05);
+  FitOptions o;
+  o.tolerance = 0.005;
+  const auto moves = fit(v, o);
+  ASSERT_EQ(moves.size(), 1u);
+  EXPECT_TRUE(moves[0].arc);
+  const auto d = measure(v, moves, o.tolerance);
+  EXPECT_TRUE(d.passed(o.tolerance)) << d.largest();
+  EXPECT_GT(d.largest(), 0.0039);
+}
+
 TEST(Fit, RandomRunsStayInTheBand) {
   // Noisy circles, spirals, corners and straight stretches at several bands: whatever the fitter
   // makes, the independent checker finds it within the band.
   std::mt19937 random(14);
   std::uniform_real_distribution<double> u(0, 1);
   int arcs = 0;
+  FitWorkspace shared;  // one workspace through all runs, as the optimizer keeps it
   for (int trial = 0; trial < 300; ++trial) {
     const double tol = trial % 2 ? 0.025 : 0.005;
     std::vector<Vec3> p;
@@ -205,6 +228,15 @@ TEST(Fit, RandomRunsStayInTheBand) {
     o.tolerance = tol;
     o.min_segment = trial % 7 == 0 ? 0.3 : 0;
     const auto moves = fit(v, o);
+    std::vector<FittedMove> again;
+    FitStats stats;
+    fit_polyline(v, o, again, stats, shared);
+    ASSERT_EQ(again.size(), moves.size()) << "trial " << trial << ": a reused workspace fits otherwise";
+    for (std::size_t i = 0; i < moves.size(); ++i) {
+      EXPECT_EQ(again[i].last, moves[i].last);
+      EXPECT_EQ(again[i].arc, moves[i].arc);
+      EXPECT_EQ(again[i].geometry.first_centre, moves[i].geometry.first_centre);
+    }
     for (const auto& m : moves) arcs += m.arc;
     const auto d = measure(v, moves, tol);
     ASSERT_TRUE(d.passed(tol)) << "trial " << trial << ": " << d.input_to_output << " / " << d.output_to_input << " "

@@ -9,6 +9,7 @@ using namespace std::string_literals;
 
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/toolpath_optimizer/geometry.hpp"
+#include "ncbridge/toolpath_optimizer/number_text.hpp"
 #include "ncbridge/toolpath_optimizer/printer_reader.hpp"
 #include "ncbridge/toolpath_optimizer/printer_writer.hpp"
 #include "support.hpp"
@@ -138,6 +139,11 @@ TEST(PrinterFrontEnd, BadInputIsLocated) {
   e = error_of("M104 S200\nG1 X1\0 Y2\n"s);
   EXPECT_EQ(e.where().line, 2u);
   EXPECT_NE(e.message().find("binary"), std::string::npos);
+  EXPECT_EQ(e.where().column, 6u);
+  e = error_of("G1\tX1 Y2\x7f\n");  // a tab is fine, DEL is not
+  EXPECT_EQ(e.where().column, 9u);
+  EXPECT_NE(e.message().find("0x7f"), std::string::npos);
+  EXPECT_NO_THROW(read("G1\tX1\tY2 E0.5\r\n;\f caf\xc3\xa9\n"));  // tab, form feed, UTF-8 in a comment
   e = error_of("G2 X1 Y1 E1\n");
   EXPECT_NE(e.message().find("arc without"), std::string::npos);
   e = error_of("G1 X1 Y1 (comment)\n");
@@ -165,6 +171,25 @@ TEST(PrinterFrontEnd, NumbersReadAsStrtodReadsThem) {
     EXPECT_EQ(m[0].end.x, expected) << t;
     EXPECT_EQ(std::signbit(m[0].end.x), std::signbit(expected)) << t;
   }
+}
+
+// fuzz_printer_gcode found a coordinate of 1e60 written as whatever was in the buffer: a number
+// too long for it came out as binary bytes the reader then refused.
+TEST(PrinterWriter, NumbersOfAnySizeAreWrittenInFull) {
+  std::string out;
+  append_number(out, 1e60, 3);
+  EXPECT_EQ(out.size(), 60u);
+  EXPECT_EQ(std::strtod(out.c_str(), nullptr), 1e60);
+  out.clear();
+  append_number(out, -1.7976931348623157e308, 6);
+  EXPECT_EQ(out.size(), 310u);
+  EXPECT_EQ(out.substr(0, 5), "-1797");
+  out.clear();
+  append_number(out, 12.5000, 40);
+  EXPECT_EQ(out, "12.5");
+  out.clear();
+  append_number(out, -0.00001, 3);
+  EXPECT_EQ(out, "0");
 }
 
 }  // namespace

@@ -19,11 +19,13 @@ InstanceState state_of(dds_instance_state_t s) {
 
 }  // namespace
 
-Reader::Reader(Participant& participant, Topic topic) : topic_(topic) {
+Reader::Reader(Participant& participant, Topic topic, std::string_view partition) : topic_(topic) {
   try {
     topic_entity_ = detail::create_topic(participant.handle(), topic);
+    dds_entity_t parent = participant.handle();
+    if (!partition.empty()) parent = subscriber_ = detail::create_subscriber(participant.handle(), partition);
     const detail::QosPtr qos = detail::make_qos(qos_profile(topic), detail::Endpoint::Reader);
-    reader_ = detail::check(dds_create_reader(participant.handle(), topic_entity_, qos.get(), nullptr),
+    reader_ = detail::check(dds_create_reader(parent, topic_entity_, qos.get(), nullptr),
                             "dds_create_reader");
     condition_ = detail::check(dds_create_readcondition(reader_, DDS_ANY_STATE), "dds_create_readcondition");
     waitset_ = detail::check(dds_create_waitset(participant.handle()), "dds_create_waitset");
@@ -37,7 +39,8 @@ Reader::Reader(Participant& participant, Topic topic) : topic_(topic) {
 Reader::~Reader() { reset(); }
 
 Reader::Reader(Reader&& other) noexcept
-    : topic_entity_(std::exchange(other.topic_entity_, 0)),
+    : subscriber_(std::exchange(other.subscriber_, 0)),
+      topic_entity_(std::exchange(other.topic_entity_, 0)),
       reader_(std::exchange(other.reader_, 0)),
       waitset_(std::exchange(other.waitset_, 0)),
       condition_(std::exchange(other.condition_, 0)),
@@ -46,6 +49,7 @@ Reader::Reader(Reader&& other) noexcept
 Reader& Reader::operator=(Reader&& other) noexcept {
   if (this != &other) {
     reset();
+    subscriber_ = std::exchange(other.subscriber_, 0);
     topic_entity_ = std::exchange(other.topic_entity_, 0);
     reader_ = std::exchange(other.reader_, 0);
     waitset_ = std::exchange(other.waitset_, 0);
@@ -58,8 +62,9 @@ Reader& Reader::operator=(Reader&& other) noexcept {
 void Reader::reset() noexcept {
   if (waitset_ > 0) dds_delete(waitset_);      // detaches the condition
   if (reader_ > 0) dds_delete(reader_);        // deletes its read condition too
+  if (subscriber_ > 0) dds_delete(subscriber_);
   if (topic_entity_ > 0) dds_delete(topic_entity_);
-  waitset_ = reader_ = condition_ = topic_entity_ = 0;
+  waitset_ = reader_ = condition_ = subscriber_ = topic_entity_ = 0;
 }
 
 std::size_t Reader::take_now(std::vector<Received>& out, std::size_t max) {

@@ -7,10 +7,20 @@
 
 namespace ncbridge::bus {
 
-Writer::Writer(Participant& participant, Topic topic) : topic_(topic) {
+Writer::Writer(Participant& participant, Topic topic, std::string_view partition) : topic_(topic) {
   topic_entity_ = detail::create_topic(participant.handle(), topic);
+  dds_entity_t parent = participant.handle();
+  if (!partition.empty()) {
+    try {
+      publisher_ = detail::create_publisher(participant.handle(), partition);
+    } catch (...) {
+      reset();
+      throw;
+    }
+    parent = publisher_;
+  }
   const detail::QosPtr qos = detail::make_qos(qos_profile(topic), detail::Endpoint::Writer);
-  writer_ = dds_create_writer(participant.handle(), topic_entity_, qos.get(), nullptr);
+  writer_ = dds_create_writer(parent, topic_entity_, qos.get(), nullptr);
   if (writer_ < 0) {
     const std::int32_t rc = writer_;
     writer_ = 0;
@@ -22,11 +32,15 @@ Writer::Writer(Participant& participant, Topic topic) : topic_(topic) {
 Writer::~Writer() { reset(); }
 
 Writer::Writer(Writer&& other) noexcept
-    : topic_entity_(std::exchange(other.topic_entity_, 0)), writer_(std::exchange(other.writer_, 0)), topic_(other.topic_) {}
+    : publisher_(std::exchange(other.publisher_, 0)),
+      topic_entity_(std::exchange(other.topic_entity_, 0)),
+      writer_(std::exchange(other.writer_, 0)),
+      topic_(other.topic_) {}
 
 Writer& Writer::operator=(Writer&& other) noexcept {
   if (this != &other) {
     reset();
+    publisher_ = std::exchange(other.publisher_, 0);
     topic_entity_ = std::exchange(other.topic_entity_, 0);
     writer_ = std::exchange(other.writer_, 0);
     topic_ = other.topic_;
@@ -36,8 +50,10 @@ Writer& Writer::operator=(Writer&& other) noexcept {
 
 void Writer::reset() noexcept {
   if (writer_ > 0) dds_delete(writer_);
+  if (publisher_ > 0) dds_delete(publisher_);
   if (topic_entity_ > 0) dds_delete(topic_entity_);
   writer_ = 0;
+  publisher_ = 0;
   topic_entity_ = 0;
 }
 

@@ -1,5 +1,6 @@
 #include "ncbridge/service/job_watch.hpp"
 
+#include "ncbridge/bus/routing.hpp"
 #include "ncbridge/common/error.hpp"
 #include "ncbridge/service/sha256.hpp"
 
@@ -13,7 +14,8 @@ JobWatch::JobWatch(bus::Participant& participant, std::vector<std::string> job_i
       status_(participant, bus::Topic::Status),
       part21_(participant, bus::Topic::Part21),
       wait_set_(participant),
-      delivered_(participant, bus::Topic::Status) {
+      delivered_(participant, bus::Topic::Status),
+      delivered_over_(participant, bus::Topic::Status, bus::kJobOverPartition) {
   wait_set_.attach(status_);
   wait_set_.attach(part21_);
 }
@@ -41,7 +43,7 @@ std::set<std::string> JobWatch::wait_all(std::chrono::milliseconds timeout, cons
       if (!r.has_data || !pending_.contains(r.envelope.key)) continue;
       const wire::JobStatus s = wire::decode_status(r.envelope.payload);
       if (on_status) on_status(s);
-      if (s.state == wire::JobState::Error) {
+      if (s.state == wire::JobState::Error || s.state == wire::JobState::Cancelled) {
         pending_.erase(r.envelope.key);
         JobOutcome o;
         o.error = s;
@@ -76,7 +78,9 @@ void JobWatch::say_delivered(const std::string& job_id) {
   s.stage = bus::kStageClient;
   s.state = wire::JobState::Delivered;
   s.progress = 1;
-  delivered_.write(job_id, bus::kStageClient, 0, static_cast<std::uint32_t>(s.state), true, wire::encode_status(s));
+  const std::string bytes = wire::encode_status(s);
+  delivered_.write(job_id, bus::kStageClient, 0, static_cast<std::uint32_t>(s.state), true, bytes);
+  delivered_over_.write(job_id, bus::kStageClient, 0, static_cast<std::uint32_t>(s.state), true, bytes);
 }
 
 std::optional<wire::Part21File> JobWatch::add_piece(wire::Part21File piece, const PieceHandler& on_piece) {

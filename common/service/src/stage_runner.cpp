@@ -10,6 +10,8 @@
 #include <utility>
 
 #include "ncbridge/bus/reader.hpp"
+#include "ncbridge/bus/routed_writer.hpp"
+#include "ncbridge/bus/routing.hpp"
 #include "ncbridge/bus/wait_set.hpp"
 #include "ncbridge/bus/worker_directory.hpp"
 #include "ncbridge/bus/worker_presence.hpp"
@@ -26,6 +28,19 @@ wire::WorkerInfo worker_info(const std::string& stage, const std::string& worker
   wire::WorkerInfo info = bus::this_process_worker(stage);
   if (!worker_id.empty()) info.worker_id = worker_id;
   return info;
+}
+
+// A job input goes to its owner in the next stage; anything else to every reader.
+std::unique_ptr<bus::SampleWriter> output_writer(bus::Participant& participant, bus::Topic topic) {
+  if (!bus::routed_to(topic)) return std::make_unique<bus::Writer>(participant, topic);
+  auto routed = std::make_unique<bus::RoutedWriter>(participant, topic);
+  routed->report_to([](const std::string& message) { spdlog::info("{}", message); });
+  return routed;
+}
+
+// A job input is read from this worker's partition (only its jobs); anything else from all.
+std::string input_partition(bus::Topic topic, const std::string& stage, const std::string& worker_id) {
+  return bus::routed_to(topic) ? bus::worker_partition(stage, worker_id) : std::string();
 }
 
 // A whole-input stage as a stream: collects the samples, runs the stage after the last.
@@ -62,7 +77,7 @@ void JobContext::check_time() const {
 void JobContext::publish_on(bus::Topic topic, std::string_view subkey, std::uint64_t seq, std::uint32_t kind, bool last,
                             std::string_view payload) {
   check_time();
-  const auto it = std::find_if(outputs_.begin(), outputs_.end(), [topic](const bus::Writer* w) { return w->topic() == topic; });
+  const auto it = std::find_if(outputs_.begin(), outputs_.end(), [topic](const bus::SampleWriter* w) { return w->topic() == topic; });
   if (it == outputs_.end()) throw std::logic_error("the stage does not publish on " + std::string(bus::topic_name(topic)));
   (*it)->write(job_id_, subkey, seq, kind, last, payload);
   published_.emplace(topic, subkey);
@@ -75,12 +90,14 @@ struct StageRunner::State {
         options(std::move(o)),
         presence(participant, worker_info(spec.stage, options.worker_id)),
         directory(participant),
-        status_reader(participant, bus::Topic::Status),
+        status_reader(participant, bus::Topic::Status, bus::kJobOverPartition),
         status_writer(participant, bus::Topic::Status),
-        output(participant, spec.output),
+        over_writer(participant, bus::Topic::Status, bus::kJobOverPartition),
+        output(output_writer(participant, spec.output)),
         wait_set(participant) {
-    for (const InputTopic& in : spec.inputs) inputs.emplace_back(in, bus::Reader(participant, in.topic));
-    for (const bus::Topic t : spec.other_outputs) other_outputs.push_back(std::make_unique<bus::Writer>(participant, t));
+    for (const InputTopic& in : spec.inputs)
+      inputs.emplace_back(in, bus::Reader(participant, in.topic, input_partition(in.topic, spec.stage, me())));
+    for (const bus::Topic t : spec.other_outputs) other_outputs.push_back(output_writer(participant, t));
     for (const auto& [in, reader] : inputs) wait_set.attach(reader);
     wait_set.attach(status_reader);
     wait_set.attach(directory.reader());
@@ -108,9 +125,19 @@ struct StageRunner::State {
     status.stage = spec.stage;
     status.worker_id = me();
     const std::string subkey = status.job_id.empty() ? spec.stage + "/" + me() : spec.stage;
-    status_writer.write(status.job_id, subkey, status_seq++, static_cast<std::uint32_t>(status.state), false,
-                        wire::encode_status(status));
+    const std::string bytes = wire::encode_status(status);
+    status_writer.write(status.job_id, subkey, status_seq, static_cast<std::uint32_t>(status.state), false, bytes);
+    if (!status.job_id.empty() && ends_job(status)) {
+      over_writer.write(status.job_id, subkey, status_seq, static_cast<std::uint32_t>(status.state), false, bytes);
+      with_over_status.insert(status.job_id);
+    }
+    ++status_seq;
     if (!status.job_id.empty()) with_status.insert(status.job_id);
+  }
+
+  static bool ends_job(const wire::JobStatus& s) {
+    return s.state == wire::JobState::Error || s.state == wire::JobState::Cancelled ||
+           (s.state == wire::JobState::Done && s.stage == bus::kStageStepWriter);
   }
 
   void health(const std::string& message) {
@@ -145,9 +172,11 @@ struct StageRunner::State {
         spdlog::warn("ignoring a malformed status sample of job {}: {}", r.envelope.key, e.what());
         continue;
       }
-      const bool over = s.state == wire::JobState::Error ||
-                        (s.state == wire::JobState::Done && s.stage == bus::kStageStepWriter);
-      if (over) job_over(r.envelope.key);
+      if (s.state == wire::JobState::Cancelled) {
+        cancel(r.envelope.key, s);
+        continue;
+      }
+      if (ends_job(s)) job_over(r.envelope.key);
       if (s.state == wire::JobState::Delivered) release_results(r.envelope.key);
     }
   }
@@ -179,6 +208,26 @@ struct StageRunner::State {
     }
   }
 
+  // `ncbridge cancel` (a Cancelled status of stage "client"): the job is over here too, and the
+  // worker that had it (started, or owns its input) says Cancelled in its stage, so `status`
+  // shows it after the cancelling client is gone. A job over already stays as it ended. A job
+  // running here stops between two of its input samples; work on one sample is not interrupted
+  // (a whole-input stage's job then ends at the next stage).
+  void cancel(const std::string& job_id, const wire::JobStatus& request) {
+    if (assembler.finished(job_id)) return;
+    const bool had = started.contains(job_id) ||
+                     (assembler.known(job_id) && directory.tracker().owns(spec.stage, me(), job_id));
+    if (had && request.stage == bus::kStageClient) {
+      spdlog::info("job {}: cancelled", job_id);
+      wire::JobStatus cancelled;
+      cancelled.job_id = job_id;
+      cancelled.state = wire::JobState::Cancelled;
+      cancelled.message = request.message.empty() ? "cancelled" : request.message;
+      publish_status(std::move(cancelled));
+    }
+    job_over(job_id);
+  }
+
   // A client has the job's whole file: the results kept for it leave the bus now (each reader
   // that comes later would be sent every file kept); its statuses stay, under the retention policy.
   void release_results(const std::string& job_id) {
@@ -199,14 +248,14 @@ struct StageRunner::State {
     kept_bytes -= std::exchange(k.bytes, 0);
   }
 
-  bus::Writer& writer_of(bus::Topic topic) {
+  bus::SampleWriter& writer_of(bus::Topic topic) {
     for (auto& w : other_outputs) {
       if (w->topic() == topic) return *w;
     }
-    return output;
+    return *output;
   }
 
-  static void unregister(bus::Writer& writer, const std::string& key, const std::string& subkey) {
+  static void unregister(bus::SampleWriter& writer, const std::string& key, const std::string& subkey) {
     try {
       writer.unregister(key, subkey);
     } catch (const std::exception& e) {
@@ -223,22 +272,33 @@ struct StageRunner::State {
       Kept& k = kept_jobs.front();
       for (const auto& [topic, subkey] : k.outputs) unregister(writer_of(topic), k.job_id, subkey);
       unregister(status_writer, k.job_id, spec.stage);
+      if (with_over_status.erase(k.job_id) != 0) unregister(over_writer, k.job_id, spec.stage);
       kept_bytes -= k.bytes;
       kept_jobs.pop_front();
     }
   }
 
-  void announce_jobs() {
+  // The jobs in progress, on the workers topic: at most once a second (every process reads that
+  // topic; one announcement per job start and end made it the bus's busiest at many workers).
+  void announce_jobs() { jobs_changed = true; }
+
+  void flush_announcement() {
+    const auto now = Clock::now();
+    if (!jobs_changed || now - last_announced < std::chrono::seconds(1)) return;
     std::vector<std::string> ids;
     ids.reserve(active.size());
     for (const auto& [id, a] : active) ids.push_back(id);
     presence.update_jobs(std::move(ids));
+    jobs_changed = false;
+    last_announced = now;
   }
 
   bool can_start(const std::string& job_id) const {
     if (started.contains(job_id)) return false;
     // A whole-input stage takes a job once all of it is here; a streaming one at its first sample.
     if (spec.open ? !assembler.ready(job_id) : !assembler.complete(job_id)) return false;
+    // A job input came to this worker because its publisher made it the owner.
+    if (bus::routed_to(assembler.key(job_id)->topic)) return true;
     return directory.tracker().owns(spec.stage, me(), job_id);
   }
 
@@ -270,7 +330,7 @@ struct StageRunner::State {
       p.progress = fraction;
       publish_status(std::move(p));
     };
-    std::vector<bus::Writer*> writers{&output};
+    std::vector<bus::SampleWriter*> writers{output.get()};
     for (auto& w : other_outputs) writers.push_back(w.get());
     a.context = std::make_unique<JobContext>(std::move(writers), job_id, progress, options.max_job_time);
     slot = &active.emplace(job_id, std::move(a)).first->second;
@@ -361,10 +421,11 @@ struct StageRunner::State {
   RunnerOptions options;
   bus::WorkerPresence presence;
   bus::WorkerDirectory directory;
-  bus::Reader status_reader;
+  bus::Reader status_reader;  // the statuses that end a job only (kJobOverPartition)
   bus::Writer status_writer;
-  bus::Writer output;
-  std::vector<std::unique_ptr<bus::Writer>> other_outputs;
+  bus::Writer over_writer;    // those this worker publishes, again in kJobOverPartition
+  std::unique_ptr<bus::SampleWriter> output;
+  std::vector<std::unique_ptr<bus::SampleWriter>> other_outputs;
   std::vector<std::pair<InputTopic, bus::Reader>> inputs;
   bus::WaitSet wait_set;  // declared after the readers: detached before they go
   JobAssembler assembler;
@@ -373,10 +434,13 @@ struct StageRunner::State {
   // Jobs this worker published output for, with the subkeys and bytes, until they are over.
   std::map<std::string, std::pair<Instances, std::uint64_t>, std::less<>> published;
   std::set<std::string, std::less<>> with_status;   // jobs this worker published a status of
+  std::set<std::string, std::less<>> with_over_status;  // ... and a status ending it
   std::set<std::string, std::less<>> delivered;  // jobs a client has whole before they were over here
   std::deque<Kept> kept_jobs;
   std::uint64_t kept_bytes = 0;
   std::uint64_t status_seq = 0;
+  bool jobs_changed = false;
+  Clock::time_point last_announced{};
 };
 
 StageRunner::StageRunner(bus::Participant& participant, StageSpec spec, RunnerOptions options)
@@ -408,6 +472,7 @@ int StageRunner::run(ShutdownSignal& shutdown) {
     s.start_owned_jobs();
     s.feed_active();
     s.evict_kept();
+    s.flush_announcement();
   }
   spdlog::info("{} worker {}: stopping", s.spec.stage, s.me());
   wire::JobStatus stopped;

@@ -1,8 +1,11 @@
 #pragma once
-// Which of many boxes may overlap a given one: boxes are filed in the cells of a uniform grid
+// Which of many boxes may overlap a given one: boxes are filed in the cells of uniform grids
 // they cover, so a query reads a few cells instead of every box. Large programs recognise
-// thousands of features, and comparing each with every earlier one grew quadratically.
+// thousands of features, and comparing each with every earlier one grew quadratically. Grids
+// of cells 1, 4, 16, ... times the cell size: a box is filed in the finest one where it covers
+// at most 2 x 2 cells, so a box over the whole part is in a few cells, not in every one.
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <utility>
 #include <vector>
@@ -22,12 +25,18 @@ class BoxIndex {
   // and unique: callers still test the boxes themselves.
   std::vector<std::size_t> candidates(const Box2& box) const;
 
+  // The same ids, the highest (the latest filed, for callers that file in machining order)
+  // first, at most `limit` of them: a query over a crowded area reads `limit` ids of each cell it
+  // covers, not every id filed there.
+  std::vector<std::size_t> latest(const Box2& box, std::size_t limit) const;
+
  private:
   using Cell = std::pair<long long, long long>;
-  bool cell_range(const Box2& box, Cell& lo, Cell& hi) const;  // false: too many cells
+  // The cells of grid `level` that `box` covers; false: too many (over `max_cells`).
+  bool cell_range(const Box2& box, std::size_t level, long long max_cells, Cell& lo, Cell& hi) const;
   double cell_;
-  std::map<Cell, std::vector<std::size_t>> cells_;
-  std::vector<std::size_t> wide_;  // boxes over too many cells to file: always candidates
+  std::vector<std::map<Cell, std::vector<std::size_t>>> levels_;  // cells' ids, each ascending and unique
+  std::vector<std::size_t> wide_;  // boxes over too many cells to file: always candidates (ascending, unique)
 };
 
 }  // namespace ncbridge::feature_recognizer

@@ -193,8 +193,11 @@ double ring_area(const Ring& ring) {
 // (a core inside a through cut falls out). Its outside profile is what the group machined.
 // The cut must hug the island (a ring about one tool wide, as a profile pass leaves): a pocket
 // or step cleared around an island is wider.
+// `groove`, when given, is set when the cut hugs such an island but the material around it stands
+// too: a groove along a contour (an engraved outline, a profile cut into a blank thicker than it).
 std::optional<Region> standing_island(std::size_t group_index, const std::vector<MillingGroup>& groups,
-                                      const std::vector<Layer>& layers, const PartEnvelope& part, double tool_diameter) {
+                                      const std::vector<Layer>& layers, const PartEnvelope& part, double tool_diameter,
+                                      bool* groove = nullptr) {
   const auto& group = groups[group_index];
   if (group.floor <= part.bottom_z + 1e-3) return std::nullopt;
   const Ring* island_ring = nullptr;
@@ -217,15 +220,24 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
   for (auto i : group.layers()) highest = std::max(highest, layers[i].z);
   const auto box = island.bbox();
   std::vector<std::size_t> into;
-  for (auto g : part.groups_by_box.candidates(*box)) {
+  for (auto g : part.groups_by_box.latest(*box, kNearCandidateLimit)) {
     if (g == group_index || groups[g].floor > highest + 1e-3 || !boxes_overlap(box, groups[g].area.bbox())) continue;
     into.push_back(g);
   }
   latest_first(into, groups);
-  if (into.size() > kNearFeatureLimit) into.resize(kNearFeatureLimit);
+  into.resize(std::min(into.size(), near_feature_limit(into.size())));
+  // (A groove's island may hold shallower grooves of its own: engraved outlines one in another.)
+  bool boss = true;
+  Region cut_into;
   for (auto g : into) {
-    if (island.intersected(groups[g].area).area() > 0.05 * island.area()) return std::nullopt;
+    const Region cut = island.intersected(groups[g].area);
+    if (cut.area() > 0.05 * island.area()) {
+      if (!groove) return std::nullopt;
+      boss = false;
+    }
+    cut_into = cut_into.united(cut);
   }
+  if (!boss && cut_into.area() > 0.5 * island.area()) return std::nullopt;
   // Around a boss the material is cleared too (or it is the part's edge); a ring cut into solid
   // material is a hole bored by circular interpolation, its core a chip.
   Region ring_fill;
@@ -237,15 +249,19 @@ std::optional<Region> standing_island(std::size_t group_index, const std::vector
   Region cleared = outside.minus(part.outline);
   std::vector<std::size_t> around;
   if (const auto outside_box = outside.bbox()) {
-    for (auto g : part.groups_by_box.candidates(*outside_box)) {
+    for (auto g : part.groups_by_box.latest(*outside_box, kNearCandidateLimit)) {
       if (g != group_index && boxes_overlap(outside_box, groups[g].area.bbox())) around.push_back(g);
     }
   }
   latest_first(around, groups);
-  if (around.size() > kNearFeatureLimit) around.resize(kNearFeatureLimit);
+  around.resize(std::min(around.size(), near_feature_limit(around.size())));
   std::sort(around.begin(), around.end());
   for (auto g : around) cleared = cleared.united(outside.intersected(groups[g].area));
-  if (cleared.area() < 0.5 * outside.area()) return std::nullopt;
+  if (cleared.area() < 0.5 * outside.area()) {
+    if (groove) *groove = true;
+    return std::nullopt;
+  }
+  if (!boss) return std::nullopt;
   return island;
 }
 
@@ -262,14 +278,14 @@ class RemovedBefore {
     if (!near) return;
     near->xmin -= 1, near->ymin -= 1, near->xmax += 1, near->ymax += 1;
     std::vector<std::size_t> earlier;
-    for (auto index : part.groups_by_box.candidates(*near)) {
+    for (auto index : part.groups_by_box.latest(*near, kNearCandidateLimit)) {
       const auto& g = groups[index];
       if (g.sequence < group.sequence && g.floor <= group.floor + 1e-3 && boxes_overlap(near, g.area.bbox())) {
         earlier.push_back(index);
       }
     }
     latest_first(earlier, groups);
-    if (earlier.size() > kNearFeatureLimit) earlier.resize(kNearFeatureLimit);
+    earlier.resize(std::min(earlier.size(), near_feature_limit(earlier.size())));
     std::sort(earlier.begin(), earlier.end());
     for (auto index : earlier) areas_.push_back(groups[index].area);
   }
@@ -453,9 +469,15 @@ std::optional<ClassifiedFeature> classify_group(std::size_t group_index, const s
   // A helix leaving a core is a hole (CAM does not leave pins standing in a blind hole).
   const bool compare = budget.available();  // with other features, within the work limit
   if (!compare) f.approximate = true;
+  bool groove = false;
   auto island = (all_circles && all_helical) || !compare
                     ? std::nullopt
-                    : standing_island(group_index, groups, layers, part, first_tool.diameter);
+                    : standing_island(group_index, groups, layers, part, first_tool.diameter, &groove);
+  // A groove along a contour with material standing on both sides, not through and not a ring
+  // about one centre (a bore, its core a chip): no feature of ISO 14649-10 that CC2 writes here
+  // (a pocket with an island needs its_boss); its workingsteps stay as the toolpaths they are,
+  // rather than a pocket that would clear the island.
+  if (groove && !all_circles && f.bottom != BottomCondition::Through) return std::nullopt;
   if (island) {
     f.type = FeatureType::GeneralOutsideProfile;
     const Ring boss = outer_ring(*island);

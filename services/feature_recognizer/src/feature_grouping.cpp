@@ -12,6 +12,22 @@ std::vector<std::size_t> MillingGroup::layers() const {
   return out;
 }
 
+namespace {
+
+// A deeper layer that leaves standing, inside what it surrounds, an area the layer above it cut
+// (a face milled over the part, then a contour around the part): no step-down of one clearing,
+// but another feature below the first one's floor.
+bool leaves_what_was_cut_above(const Layer& above, const Layer& layer, const Region& filled) {
+  if (!(layer.z < above.z - 1e-3)) return false;
+  const double filled_area = filled.area();
+  if (!(filled_area > 1.1 * layer.area.area())) return false;  // surrounds little or nothing
+  const Region standing = filled.minus(layer.area);
+  const double standing_area = standing.area();
+  return standing_area >= 0.1 * filled_area && standing.intersected(above.area).area() > 0.5 * standing_area;
+}
+
+}  // namespace
+
 std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double finishing_allowance, WorkBudget& budget,
                                        const std::function<void()>& checkpoint) {
   std::vector<MillingGroup> groups;
@@ -83,7 +99,7 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
       auto& group = groups[*last_group];
       const auto& prev = layers[group.operations.back().layers.back()];
       if (prev.tool.number == layer.tool.number && prev.freeform == layer.freeform &&
-          may_match(i, *last_group) && overlaps(*last_group)) {
+          may_match(i, *last_group) && overlaps(*last_group) && !leaves_what_was_cut_above(prev, layer, fills[i])) {
         add(*last_group, layer.z > prev.z + 1e-3);
         continue;
       }
@@ -91,9 +107,10 @@ std::vector<MillingGroup> group_layers(const std::vector<Layer>& layers, double 
     // A later operation on an earlier feature: same region, not deeper than its floor beyond
     // the finishing allowance.
     bool attached = false;
-    const auto near = fill_boxes[i] ? group_index.candidates(*fill_boxes[i]) : std::vector<std::size_t>{};
+    const auto near = fill_boxes[i] ? group_index.latest(*fill_boxes[i], kNearCandidateLimit) : std::vector<std::size_t>{};
     std::size_t compared = 0;
-    for (auto it = near.rbegin(); it != near.rend() && compared < kNearFeatureLimit && budget.available(); ++it) {
+    const std::size_t compare_limit = near_feature_limit(near.size());
+    for (auto it = near.begin(); it != near.end() && compared < compare_limit && budget.available(); ++it) {
       const std::size_t g = *it;
       auto& group = groups[g];
       if (group.freeform != layer.freeform) continue;

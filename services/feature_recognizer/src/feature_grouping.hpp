@@ -37,6 +37,18 @@ inline constexpr double kIndexCell = 25.0;
 // whatever cheap test the comparison has). A real part has a handful near each; a program of
 // random moves overlaps every feature with every other, and comparing all would be quadratic.
 inline constexpr std::size_t kNearFeatureLimit = 16;
+// Those are found among the latest this many near it by box (BoxIndex::latest): over a crowded
+// area (every feature of a program of random moves spans the part) a query reads no more.
+inline constexpr std::size_t kNearCandidateLimit = 128;
+// A crowd: more than kCrowd earlier features near one by box. A real part has a handful near
+// each feature; a crowd is a program of random strokes across the part, where every feature
+// overlaps every other and each exact comparison costs as much as the feature itself. There a
+// feature is compared exactly with only the latest kCrowdedFeatureLimit near it.
+inline constexpr std::size_t kCrowd = 64;
+inline constexpr std::size_t kCrowdedFeatureLimit = 4;
+inline constexpr std::size_t near_feature_limit(std::size_t near) {
+  return near > kCrowd ? kCrowdedFeatureLimit : kNearFeatureLimit;
+}
 
 // Exact comparisons charge `budget`; past it a layer starts its own group. Coarse layers make
 // one group per run of one tool, one operation per layer.

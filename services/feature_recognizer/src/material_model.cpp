@@ -11,24 +11,26 @@ void MaterialModel::add_cut(const Region& area, double floor, std::size_t order)
 
 std::vector<const MaterialModel::Cut*> MaterialModel::cuts_near(const Box2& box, std::size_t order) const {
   std::vector<const Cut*> out;
-  for (auto i : index_.candidates(box)) {
+  for (auto i : index_.latest(box, kNearCandidateLimit)) {
     const Cut& cut = cuts_[i];
     if (cut.order < order && cut.box && box.xmin <= cut.box->xmax && cut.box->xmin <= box.xmax &&
         box.ymin <= cut.box->ymax && cut.box->ymin <= box.ymax) {
       out.push_back(&cut);
     }
   }
+  std::reverse(out.begin(), out.end());
   return out;
 }
 
 namespace {
 
-// The latest kNearFeatureLimit of `cuts` (bounded exact work), in the order they were made.
+// The latest near_feature_limit of `cuts` (bounded exact work), in the order they were made.
 template <typename Cut>
 void keep_latest(std::vector<const Cut*>& cuts) {
-  if (cuts.size() <= kNearFeatureLimit) return;
+  const std::size_t limit = near_feature_limit(cuts.size());
+  if (cuts.size() <= limit) return;
   std::stable_sort(cuts.begin(), cuts.end(), [](const Cut* a, const Cut* b) { return a->order > b->order; });
-  cuts.resize(kNearFeatureLimit);
+  cuts.resize(limit);
   std::stable_sort(cuts.begin(), cuts.end(), [](const Cut* a, const Cut* b) { return a->order < b->order; });
 }
 

@@ -32,8 +32,8 @@ class MaterialModel {
     std::optional<Box2> box;  // of `area`: cuts elsewhere change nothing here
   };
   static constexpr double kCell = 25.0;  // mm, of the index of the cuts' boxes
-  // The cuts before `order` whose boxes touch `box` (or contain a point), in the order they
-  // were made.
+  // The cuts before `order` whose boxes touch `box` (or contain a point), of the latest
+  // kNearCandidateLimit filed near it, in the order they were made.
   std::vector<const Cut*> cuts_near(const Box2& box, std::size_t order) const;
   double stock_top_;
   std::vector<Cut> cuts_;

@@ -10,6 +10,7 @@
 #include "cutting_layers.hpp"
 #include "feature_classification.hpp"
 #include "feature_grouping.hpp"
+#include "box_index.hpp"
 #include "hole_recognition.hpp"
 #include "material_model.hpp"
 #include "swept_area.hpp"
@@ -55,11 +56,19 @@ bool same_key(const Layer& a, Point2 a_origin, const Layer& b, Point2 b_origin) 
   return ka == kb;
 }
 
-// Past the budget (the path points and area vertices of the layers made so far) the layers
-// are coarse: no swept area.
+// A layer whose path box overlaps those of more than this many of the latest 4 x as many earlier
+// layers of other paths near it, each box at least a quarter of its own (step-downs repeating one
+// path count once; a late profile around many small pockets is no crowd) is in a crowd: no real part cuts one place with so
+// many different paths, a program of random strokes across the part soon does, and there every
+// exact comparison costs as much as the layer itself (docs/recognition.md, "Bounded cost").
+constexpr std::size_t kCrowdedLayers = 128;
+
+// Past the budget (the path points and area vertices of the layers made so far), or in a crowd,
+// the layers are coarse: no swept area.
 void compute_layer_areas(std::vector<Layer>& layers, double tolerance, WorkBudget& budget,
                          const std::function<void()>& checkpoint) {
   std::unordered_multimap<std::uint64_t, std::size_t> cache;  // key hash -> the layer whose area it is
+  BoxIndex paths_by_box(kIndexCell);  // the layers of distinct paths, by their paths' boxes
   for (std::size_t i = 0; i < layers.size(); ++i) {
     if (checkpoint) checkpoint();
     auto& layer = layers[i];
@@ -72,6 +81,19 @@ void compute_layer_areas(std::vector<Layer>& layers, double tolerance, WorkBudge
     std::optional<std::size_t> made;
     for (auto [it, end] = cache.equal_range(hash); it != end && !made; ++it) {
       if (same_key(layers[it->second], path_origin(layers[it->second]), layer, origin)) made = it->second;
+    }
+    if (!made) {
+      std::size_t crowd = 0;
+      const double size = layer.extent.width() * layer.extent.height();
+      for (auto k : paths_by_box.latest(layer.extent, 4 * kCrowdedLayers)) {
+        const Box2& other = layers[k].extent;
+        crowd += boxes_overlap(other, layer.extent) && other.width() * other.height() >= 0.25 * size ? 1 : 0;
+      }
+      paths_by_box.insert(i, layer.extent);
+      if (crowd > kCrowdedLayers) {
+        layer.coarse = true;
+        continue;
+      }
     }
     if (made) {
       const Point2 made_at = path_origin(layers[*made]);
@@ -151,6 +173,9 @@ void split_nested_step_downs(std::vector<MillingGroup>& groups, const std::vecto
 
 Region disk(Point2 c, double diameter, double tolerance) { return Region::polygon(stadium(c, c, diameter / 2, tolerance)); }
 
+// mm: a cut no deeper into the material than this removes nothing.
+constexpr double kAirCut = 1e-6;
+
 struct Pending {
   std::size_t order;
   ClassifiedFeature item;
@@ -226,6 +251,9 @@ std::vector<RecognizedFeature> recognize(const std::vector<ToolpathWorkingstep>&
       const WorkCharge charge(material_budget);
       f.top_z = p.is_hole ? material.height_at(p.hole_at, p.order) : material.top_over(p.item.footprint, f.bottom_z, p.order);
     }
+    // Cut at or above the material (feeds above the stock, a contour at the stock's top): air,
+    // no feature. Its workingsteps stay in the model as the toolpaths they are.
+    if (f.bottom_z >= f.top_z - kAirCut) continue;
     material.add_cut(p.cut, f.bottom_z, p.order);
     out.push_back(std::move(f));
   }

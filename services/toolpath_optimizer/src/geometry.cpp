@@ -4,14 +4,6 @@
 
 namespace ncbridge::toolpath_optimizer {
 
-PlanePoint to_plane(Vec3 p, canonical::Plane plane) {
-  switch (plane) {
-    case canonical::Plane::YZ: return {p.y, p.z, p.x};
-    case canonical::Plane::XZ: return {p.z, p.x, p.y};
-    default: return {p.x, p.y, p.z};
-  }
-}
-
 Vec3 from_plane(PlanePoint p, canonical::Plane plane) {
   switch (plane) {
     case canonical::Plane::YZ: return {p.normal, p.first, p.second};

@@ -124,7 +124,7 @@ void Optimizer::flush() {
 
   fitted_.clear();
   FitStats fs;
-  fit_polyline(vertices_, fit, fitted_, fs);
+  fit_polyline(vertices_, fit, fitted_, fs, workspace_);
   stats_.arcs += fs.arcs;
   stats_.lines_merged += fs.lines_merged;
   stats_.folded += fs.folded;

@@ -20,14 +20,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Hands each element to the next stage, recording the path on the way when asked.
+// Hands each element to the next stage, giving its path to the checker on the way when asked.
 class Tee final : public ElementSink {
  public:
-  Tee(ElementSink& next, PathRecorder* recorder) : next_(next), recorder_(recorder) {}
+  Tee(ElementSink& next, DeviationChecker* checker) : next_(next), checker_(checker) {}
   void element(Element&& e) override {
-    if (recorder_ && std::holds_alternative<Motion>(e.item)) {
-      Element copy{std::get<Motion>(e.item)};
-      recorder_->element(std::move(copy));
+    if (checker_ && std::holds_alternative<Motion>(e.item)) {
+      path_pieces(e, [this](const PathPiece& p) { checker_->input(p); });
     }
     next_.element(std::move(e));
   }
@@ -35,7 +34,7 @@ class Tee final : public ElementSink {
 
  private:
   ElementSink& next_;
-  PathRecorder* recorder_;
+  DeviationChecker* checker_;
 };
 
 // Calls progress every 64k motions.
@@ -143,8 +142,14 @@ OptimizeResult optimize(const OptimizeRequest& request, const OutputSinks& outpu
     if (krl_options.source.empty()) krl_options.source = request.input.filename().string();
   }
 
-  PathRecorder input_path, output_path;
-  PathRecorder* in_rec = request.check ? &input_path : nullptr;
+  // The checker takes both paths as they stream (printer output is read back as it is written,
+  // so it holds only what the optimizer and the writer hold); KRL and CNC output are read back
+  // whole at the end.
+  DeviationOptions check_options;
+  check_options.tolerance = request.optimizer.tolerance_mm;
+  DeviationChecker checker(check_options);
+  CheckerFeed output_path(checker, true);
+  DeviationChecker* in_checker = request.check ? &checker : nullptr;
   Clock::duration check_time{};
   // The written text, read back by the output's own front-end: printer lines as they come, the
   // KRL program when it is whole.
@@ -186,7 +191,7 @@ OptimizeResult optimize(const OptimizeRequest& request, const OutputSinks& outpu
     after_optimizer = loops.get();
   }
   Optimizer optimizer(optimizer_options, *after_optimizer);
-  Tee tee(optimizer, in_rec);
+  Tee tee(optimizer, in_checker);
   Progress progress(tee, request.progress);
   if (cnc) {
     const BlockCounts in = count_file_blocks(request.input, request.cnc.dialect == interpreter::Dialect::Heidenhain);
@@ -237,12 +242,11 @@ OptimizeResult optimize(const OptimizeRequest& request, const OutputSinks& outpu
       CanonicalFrontEnd front_end(output_path);
       interpreter::interpret_text(krl_text, request.output_name, reading, front_end);
     }
-    DeviationOptions options;
-    options.tolerance = request.optimizer.tolerance_mm;
-    result.deviation = check_deviation(input_path.pieces, output_path.pieces, options);
+    result.deviation = checker.finish();
+    result.check_pieces_held = checker.most_held();
     check_time += Clock::now() - t;
     result.check_seconds = seconds(check_time);
-    if (!result.deviation->passed(options.tolerance)) {
+    if (!result.deviation->passed(check_options.tolerance)) {
       std::string what = "the output leaves the band: largest deviation " + std::to_string(result.deviation->largest()) +
                          " mm at output line " + std::to_string(result.deviation->worst_output_line);
       for (const auto& p : result.deviation->problems) what += "; " + p;

@@ -23,13 +23,15 @@ char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + '
 
 enum class ValueState : std::uint8_t { Number, Empty, Bad };
 
+// No default member initialisers: a line's array of words is left uninitialised and each word
+// is set whole when split_words finds it.
 struct Word {
-  char letter = 0;
-  ValueState state = ValueState::Empty;
-  double value = 0;
-  std::uint8_t decimals = 0;
-  bool glued = false;        // no number, and a letter right after (`Xabc`)
-  std::uint32_t column = 0;  // 1-based, of the letter
+  char letter;
+  ValueState state;
+  double value;
+  std::uint8_t decimals;
+  bool glued;            // no number, and a letter right after (`Xabc`)
+  std::uint32_t column;  // 1-based, of the letter
 };
 
 }  // namespace
@@ -85,6 +87,7 @@ bool split_words(std::string_view code, std::array<W, N>& words, std::size_t& co
     }
     if (count == N) return false;
     W& w = words[count++];
+    w = W{};
     w.letter = upper(c);
     w.column = static_cast<std::uint32_t>(i + 1);
     std::size_t j = ++i;
@@ -153,12 +156,21 @@ void PrinterReader::line(std::string_view text) {
       crlf = true;
     }
   }
-  for (std::size_t i = 0; i < body.size(); ++i) {
-    const auto c = static_cast<unsigned char>(body[i]);
-    if (c == 0 || (c < 0x20 && c != '\t' && c != '\r' && c != '\f') || c == 0x7f) {
-      char hex[8];
-      std::snprintf(hex, sizeof hex, "0x%02x", c);
-      fail(i + 1, std::string("binary data (byte ") + hex + ") in a G-code line");
+  // Control characters other than tab, CR and form feed: one branch-free pass over the line,
+  // the exact look only when it finds one of them or a tab.
+  bool control = false;
+  for (const char ch : body) {
+    const auto c = static_cast<unsigned char>(ch);
+    control |= (c < 0x20) | (c == 0x7f);
+  }
+  if (control) {
+    for (std::size_t i = 0; i < body.size(); ++i) {
+      const auto c = static_cast<unsigned char>(body[i]);
+      if (c == 0 || (c < 0x20 && c != '\t' && c != '\r' && c != '\f') || c == 0x7f) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02x", c);
+        fail(i + 1, std::string("binary data (byte ") + hex + ") in a G-code line");
+      }
     }
   }
   std::string_view code = body.substr(0, body.find(';'));
@@ -174,7 +186,7 @@ void PrinterReader::line(std::string_view text) {
   }
   ++counts_.commands;
 
-  std::array<Word, 24> words;
+  std::array<Word, 24> words;  // uninitialised: split_words sets the first `count`
   std::size_t count = 0, bad_column = 0;
   bool checksum = false;
   const bool plain = split_words(code, words, count, checksum, bad_column);

@@ -10,6 +10,10 @@ namespace ncbridge::toolpath_optimizer {
 
 namespace {
 
+// Text handed on in pieces of about this size: large enough for few calls, small enough that
+// the deviation checker reading the output back is never far behind the input.
+constexpr std::size_t kPiece = 8 << 10;
+
 void word(std::string& out, char letter, double value, int decimals) {
   out.push_back(' ');
   out.push_back(letter);
@@ -20,7 +24,7 @@ void word(std::string& out, char letter, double value, int decimals) {
 
 PrinterWriter::PrinterWriter(std::function<void(std::string_view)> out, int centre_decimals)
     : out_(std::move(out)), centre_decimals_(centre_decimals) {
-  buffer_.reserve(1 << 16);
+  buffer_.reserve(kPiece + 256);
 }
 
 PrinterWriter::~PrinterWriter() = default;
@@ -72,7 +76,7 @@ void PrinterWriter::write(std::string_view text, bool command) {
   ++lines_;
   if (command) ++commands_;
   bytes_ += text.size();
-  if (buffer_.size() >= (1 << 16)) flush();
+  if (buffer_.size() >= kPiece) flush();
 }
 
 void PrinterWriter::element(Element&& e) {

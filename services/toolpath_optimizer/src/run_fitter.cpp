@@ -68,7 +68,14 @@ std::size_t extend(std::size_t first, std::size_t begin, std::size_t n, std::siz
 
 void fit_polyline(std::span<const FitVertex> v, const FitOptions& options, std::vector<FittedMove>& out,
                   FitStats& stats) {
+  FitWorkspace workspace;
+  fit_polyline(v, options, out, stats, workspace);
+}
+
+void fit_polyline(std::span<const FitVertex> v, const FitOptions& options, std::vector<FittedMove>& out,
+                  FitStats& stats, FitWorkspace& workspace) {
   const std::size_t n = v.size();
+  workspace.valid = false;  // other vertices than last time
   if (n < 2) return;
   const std::size_t begin_out = out.size();
   const double tol = options.tolerance - options.margin;
@@ -84,7 +91,7 @@ void fit_polyline(std::span<const FitVertex> v, const FitOptions& options, std::
       ArcGeometry g;
       auto arc_ok = [&](std::size_t k) {
         if (!extrusion_rate_fits(v, s, k, options.extrusion_rate_variance)) return false;
-        if (!arc_fits(v, s, k, options, g)) return false;
+        if (!arc_fits(v, s, k, options, g, workspace)) return false;
         best_arc = g;
         return true;
       };

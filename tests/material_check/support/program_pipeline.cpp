@@ -42,6 +42,38 @@ PipelineResult run_forward_pipeline(const fs::path& program, const fs::path& too
   return out;
 }
 
+namespace {
+
+interpreter::Dialect dialect_of(const std::string& name) {
+  if (name == "rs274ngc") return interpreter::Dialect::Rs274Ngc;
+  if (name == "fanuc") return interpreter::Dialect::Fanuc;
+  if (name == "mach3") return interpreter::Dialect::Mach3;
+  if (name == "siemens840d") return interpreter::Dialect::Siemens840D;
+  if (name == "heidenhain") return interpreter::Dialect::Heidenhain;
+  throw std::invalid_argument("no dialect " + name);
+}
+
+}  // namespace
+
+PipelineResult run_forward_pipeline(const ProgramInput& input) {
+  PipelineResult out;
+  cc1_builder::Options options;
+  options.tools = setup::read_tool_list(input.tools);
+  out.stock = setup::read_stock(input.stock);
+  options.stock = out.stock;
+  cc1_builder::Cc1Builder builder(options);
+  interpreter::Options io;
+  io.tools = options.tools;
+  io.dialect = dialect_of(input.dialect);
+  io.subroutine_path = input.subroutine_path;
+  io.require_program_end = false;
+  interpreter::interpret_file(input.program, io, builder);
+  out.cc1 = builder.take_project();
+  const auto features = feature_recognizer::recognize(feature_recognizer::workingsteps_from_cc1(out.cc1), out.stock);
+  out.cc2 = feature_recognizer::cc2_from_cc1(out.cc1, features).project;
+  return out;
+}
+
 CorpusPart corpus_part(const std::string& name) {
   const fs::path shared = NCBRIDGE_SHARED_DIR;
   const fs::path cam = shared / "corpus" / "cam", paper = shared / "corpus" / "paper";

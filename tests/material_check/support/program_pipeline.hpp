@@ -4,6 +4,7 @@
 // explicit toolpaths: what `ncbridge convert --level cc2` writes.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "ncbridge/setup/stock.hpp"
 #include "ncbridge/stepnc/project.hpp"
@@ -19,6 +20,16 @@ struct PipelineResult {
 // `program` is read with every comment stripped (recognition must not read them).
 PipelineResult run_forward_pipeline(const std::filesystem::path& program, const std::filesystem::path& tools,
                                     const std::filesystem::path& stock);
+
+// A program in any dialect, read as `ncbridge convert` reads it (no M2 needed at its end), its
+// subprograms from `subroutine_path`; comments are not stripped (recognition reads only
+// geometry, tools and the stock).
+struct ProgramInput {
+  std::filesystem::path program, tools, stock;
+  std::string dialect = "rs274ngc";  // rs274ngc, fanuc, mach3, siemens840d, heidenhain
+  std::vector<std::filesystem::path> subroutine_path;
+};
+PipelineResult run_forward_pipeline(const ProgramInput& input);
 
 // The corpus parts: name -> program, tools, stock (cam/, paper/, tests/cc2/parts/).
 struct CorpusPart {

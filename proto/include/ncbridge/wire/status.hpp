@@ -10,7 +10,9 @@ namespace ncbridge::wire {
 
 // Delivered: a client has the job's whole file (stage "client"); the step writer then drops its
 // copy from the bus, so readers that come later are not sent every file kept.
-enum class JobState : std::uint8_t { Queued, Running, Progress, Done, Error, Delivered };
+// Cancelled: a client asked to drop the job (stage "client", `ncbridge cancel`); the worker that
+// had it drops it and says Cancelled in its own stage.
+enum class JobState : std::uint8_t { Queued, Running, Progress, Done, Error, Delivered, Cancelled };
 
 struct JobStatus {
   std::string job_id;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "ncbridge/bus/envelope.hpp"
@@ -14,7 +15,8 @@ namespace ncbridge::bus {
 
 class Reader {
  public:
-  Reader(Participant& participant, Topic topic);  // throws BusError
+  // `partition`: empty for the default partition (what a Writer made without one publishes in).
+  Reader(Participant& participant, Topic topic, std::string_view partition = {});  // throws BusError
   ~Reader();
   Reader(Reader&& other) noexcept;
   Reader& operator=(Reader&& other) noexcept;
@@ -35,6 +37,7 @@ class Reader {
  private:
   std::size_t take_now(std::vector<Received>& out, std::size_t max);
   void reset() noexcept;
+  std::int32_t subscriber_ = 0;  // only with a partition
   std::int32_t topic_entity_ = 0;
   std::int32_t reader_ = 0;
   std::int32_t waitset_ = 0;

@@ -18,11 +18,15 @@ class WaitSet {
 
   // The reader must outlive this wait set (or be attached no more).
   void attach(const Reader& reader);
-  // Returns true as soon as an attached reader has something to take, false after `timeout`.
+  // Returns true as soon as an attached reader has something to take (or wake() was called),
+  // false after `timeout`.
   bool wait(std::chrono::milliseconds timeout);
+  // Ends a wait now, from any thread (or the next one, if none is under way).
+  void wake();
 
  private:
   std::int32_t waitset_ = 0;
+  std::int32_t guard_ = 0;
 };
 
 }  // namespace ncbridge::bus

@@ -26,7 +26,7 @@ struct JobOutcome {
   // Set when the job is done: the file's pieces joined (each piece's digest checked; `sha256`
   // is that of the last piece, `more` false).
   std::optional<wire::Part21File> file;
-  std::optional<wire::JobStatus> error;   // set when a stage rejected it
+  std::optional<wire::JobStatus> error;   // set when a stage rejected it, or it was cancelled
   bool timed_out() const { return !file && !error; }
 };
 
@@ -72,7 +72,8 @@ class JobWatch {
   bus::Reader status_;
   bus::Reader part21_;
   bus::WaitSet wait_set_;
-  bus::Writer delivered_;  // on the status topic
+  bus::Writer delivered_;       // on the status topic
+  bus::Writer delivered_over_;  // the same, in the partition the workers read (bus/routing.hpp)
 };
 
 }  // namespace ncbridge::service

@@ -1,20 +1,26 @@
 #pragma once
 // The job loop every service runs around its stage library:
-//  - reads the stage's input topics; a job's samples are de-duplicated and kept (JobAssembler)
-//    by EVERY worker of the stage, owner or not, so a survivor can redo a dead worker's job
-//    from what it already holds;
-//  - a streaming stage (StageSpec::open) starts a job as soon as its first sample is there and
-//    rendezvous hashing over the live workers of the stage (workers topic + DDS liveliness)
-//    ranks this worker first, and gets the samples in seq order as they arrive; a whole-input
-//    stage (StageSpec::run) gets the job once all of it is there. Ownership is checked again
-//    at every membership change, so a survivor takes over a dead worker's jobs;
+//  - reads the stage's input topics. A job input (programs, canonical, workingsteps, features)
+//    comes to the worker that owns the job only: its publisher sends it in that worker's
+//    partition (bus::RoutedWriter: rendezvous hashing over the live workers of the stage when the
+//    job is first written; when the worker dies, the publisher sends the job to the survivor that
+//    owns it now). A job's samples are de-duplicated and kept (JobAssembler) until it is over;
+//  - a streaming stage (StageSpec::open) starts a job as soon as its first sample is there, and
+//    gets the samples in seq order as they arrive; a whole-input stage (StageSpec::run) gets the
+//    job once all of it is there. An input every worker reads (a controller's blocks) is started
+//    by the worker that rendezvous hashing over the live workers of the stage ranks first, checked
+//    again at every membership change, so a survivor takes over a dead worker's runs;
+//  - publishes its output of a job the same way, to the owner in the next stage (a final result,
+//    part21, to everyone), and keeps it until the job is over;
 //  - publishes RUNNING, PROGRESS, DONE or ERROR (with the source location of an InputError) on
 //    the status topic, and goes on with the next job after an error;
-//  - reads the status topic: a job is over when the step_writer reports it DONE or any stage
-//    reports an ERROR; its input is dropped, work on it stops, and this stage's output
+//  - reads the statuses that end a job (published again in bus::kJobOverPartition; a worker
+//    does not read every RUNNING and PROGRESS): a job is over when the step_writer reports it
+//    DONE or any stage reports an ERROR; its input is dropped, work on it stops, and this stage's output
 //    instances of it are unregistered (which frees the writer's durable copy) — at once for an
 //    intermediate stage, after the retention policy for final results (part21) and statuses;
-//  - announces the worker (WorkerPresence), and its health as status samples with an empty job
+//  - announces the worker (WorkerPresence) with its jobs in progress (at most once a second),
+//    and its health as status samples with an empty job
 //    id (subkey "<stage>/<worker_id>"): "ready" at start, "stopped" on a clean exit;
 //  - stops a job that runs longer than RunnerOptions::max_job_time (--max-job-seconds) with an
 //    ERROR status naming it, and goes on: the limit is checked between samples, on every
@@ -69,7 +75,7 @@ class JobContext {
   using Clock = std::chrono::steady_clock;
   // `outputs`: the stage's output topic first, then any others it may publish on. A job given a
   // `time_limit` (> 0) may run that long from now.
-  JobContext(std::vector<bus::Writer*> outputs, std::string job_id, Progress progress,
+  JobContext(std::vector<bus::SampleWriter*> outputs, std::string job_id, Progress progress,
              std::chrono::milliseconds time_limit = std::chrono::milliseconds(0))
       : outputs_(std::move(outputs)), job_id_(std::move(job_id)), progress_(std::move(progress)),
         started_(Clock::now()), time_limit_(time_limit) {}
@@ -97,7 +103,7 @@ class JobContext {
   std::uint64_t published_bytes() const { return bytes_; }
 
  private:
-  std::vector<bus::Writer*> outputs_;
+  std::vector<bus::SampleWriter*> outputs_;
   std::string job_id_;
   Progress progress_;
   Clock::time_point started_;

@@ -17,6 +17,9 @@
 // bound otherwise). The figures reported are the largest sampled distances.
 // Deviations are collected per layer (the output motion's end Z, in 0.01 steps).
 #include <cstdint>
+#include <deque>
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -33,15 +36,15 @@ struct PathPiece {
   std::uint32_t line = 0;
 };
 
-// Collects the path of an element stream in mm, loops expanded; skips motions from an unknown
-// position and motions that move nothing.
+// The path of an element stream in mm, loops expanded, piece by piece to `each`; motions from an
+// unknown position and motions that move nothing are skipped.
+void path_pieces(const Element& e, const std::function<void(const PathPiece&)>& each);
+
+// Collects the path of an element stream (path_pieces).
 class PathRecorder final : public ElementSink {
  public:
   void element(Element&& e) override;
   std::vector<PathPiece> pieces;
-
- private:
-  void add(const Element& e, double z_shift);
 };
 
 struct DeviationOptions {
@@ -74,6 +77,49 @@ struct DeviationReport {
   bool passed(double tolerance) const { return problem_count == 0 && largest() <= tolerance + 1e-6; }
 };
 
+// The checker fed as the two programs stream: input pieces as the input is read, output pieces
+// as the written output is read back. Each output piece is checked as soon as the input up to
+// its end has come, and the input before it is dropped: what is held is the input not yet
+// matched by output (the optimizer's run and the writer's buffer, in a streaming pipeline), not
+// the file.
+class DeviationChecker {
+ public:
+  explicit DeviationChecker(const DeviationOptions& options) : options_(options) {}
+  void input(const PathPiece& piece);
+  void output(const PathPiece& piece);
+  // Checks what is left; the report. Pieces after finish() are ignored.
+  DeviationReport finish();
+  // The most input and output pieces held at once so far.
+  std::size_t most_held() const { return most_held_; }
+
+ private:
+  bool check_next(bool final);  // false: the front output piece needs input not come yet
+  void drain(bool final);
+  void consume(std::size_t input_pieces);
+  bool stop();
+  void problem(const std::string& text);
+  static std::string where(const PathPiece& p);
+
+  DeviationOptions options_;
+  DeviationReport report_;
+  std::deque<PathPiece> input_, output_;
+  std::map<long long, LayerDeviation> layers_;
+  std::size_t retry_at_ = 0, most_held_ = 0;
+  bool stopped_ = false, finished_ = false;
+};
+
+// Sends an element stream's path pieces to the checker's input or output side.
+class CheckerFeed final : public ElementSink {
+ public:
+  CheckerFeed(DeviationChecker& checker, bool output) : checker_(checker), output_(output) {}
+  void element(Element&& e) override;
+
+ private:
+  DeviationChecker& checker_;
+  bool output_;
+};
+
+// The whole of both paths at once.
 DeviationReport check_deviation(const std::vector<PathPiece>& input, const std::vector<PathPiece>& output,
                                 const DeviationOptions& options);
 

@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "ncbridge/toolpath_optimizer/geometry.hpp"
 #include "ncbridge/toolpath_optimizer/toolpath.hpp"
 
 namespace ncbridge::toolpath_optimizer {
@@ -51,7 +52,19 @@ struct FitStats {
   std::uint64_t folded = 0;         // short moves folded into a neighbour
 };
 
+// What the arc fitter keeps between candidates: the vertices from one start on, in the plane
+// relative to it (grown as candidates grow), and per-vertex buffers. Reused from run to run, so
+// that a long file is fitted without allocating per candidate.
+struct FitWorkspace {
+  std::vector<PlanePoint> points;
+  std::size_t start = 0;       // the vertex `points` are relative to
+  bool valid = false;          // points belong to the current vertices and start
+  std::vector<double> rho, steps;
+};
+
 // Fits vertices[0..n) into moves appended to `out` (in order, covering every segment once).
+void fit_polyline(std::span<const FitVertex> vertices, const FitOptions& options, std::vector<FittedMove>& out,
+                  FitStats& stats, FitWorkspace& workspace);
 void fit_polyline(std::span<const FitVertex> vertices, const FitOptions& options, std::vector<FittedMove>& out,
                   FitStats& stats);
 
@@ -59,6 +72,9 @@ void fit_polyline(std::span<const FitVertex> vertices, const FitOptions& options
 bool line_fits(std::span<const FitVertex> v, std::size_t first, std::size_t last, double tolerance);
 bool arc_fits(std::span<const FitVertex> v, std::size_t first, std::size_t last, const FitOptions& options,
               ArcGeometry& geometry);
+// The same with the caller's workspace (its points are reused while `first` stays the same).
+bool arc_fits(std::span<const FitVertex> v, std::size_t first, std::size_t last, const FitOptions& options,
+              ArcGeometry& geometry, FitWorkspace& workspace);
 // Folds fitted moves shorter than options.min_segment into the move before or after where one
 // line or arc takes both within the band. Works on out[begin..].
 void fold_short_moves(std::span<const FitVertex> v, const FitOptions& options, std::vector<FittedMove>& out,

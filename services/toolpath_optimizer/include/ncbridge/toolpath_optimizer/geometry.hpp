@@ -18,7 +18,13 @@ inline double distance(Vec3 a, Vec3 b) { return norm(a - b); }
 struct PlanePoint {
   double first = 0, second = 0, normal = 0;
 };
-PlanePoint to_plane(Vec3 p, canonical::Plane plane);
+inline PlanePoint to_plane(Vec3 p, canonical::Plane plane) {
+  switch (plane) {
+    case canonical::Plane::YZ: return {p.y, p.z, p.x};
+    case canonical::Plane::XZ: return {p.z, p.x, p.y};
+    default: return {p.x, p.y, p.z};
+  }
+}
 Vec3 from_plane(PlanePoint p, canonical::Plane plane);
 
 // Distance from p to the segment [a, b].

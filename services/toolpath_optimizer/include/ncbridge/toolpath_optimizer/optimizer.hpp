@@ -68,6 +68,7 @@ class Optimizer final : public ElementSink {
   std::vector<Motion> run_;
   std::vector<FitVertex> vertices_;
   std::vector<FittedMove> fitted_;
+  FitWorkspace workspace_;
   std::vector<std::pair<std::size_t, Element>> riders_;  // comments inside the run, after motion n
 };
 

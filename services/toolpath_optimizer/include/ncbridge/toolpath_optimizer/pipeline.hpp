@@ -56,6 +56,7 @@ struct OptimizeResult {
   std::optional<DeviationReport> deviation;  // when checked
   double optimize_seconds = 0;               // read, optimize, write
   double check_seconds = 0;                  // the deviation checker's share of it
+  std::size_t check_pieces_held = 0;         // the most path pieces the checker held at once
 };
 
 // Where the output goes: the program (printer G-code, KRL .src) and, for KRL, the .dat.
