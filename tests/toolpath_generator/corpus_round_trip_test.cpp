@@ -43,9 +43,7 @@ const std::map<std::string, std::size_t> kKnownDifferences = {
     // it did not name as CENTER_MILLING, so the two compared equal.
     {"p01_block_reference", 1},
     {"p03_bracket_steps", 2},  // a face's stepover side is named; a BIDIRECTIONAL_CONTOUR step comes back BIDIRECTIONAL
-    {"p04_open_pockets", 1},   // a BIDIRECTIONAL open pocket's finishing contour makes it BIDIRECTIONAL_CONTOUR
     {"p05_slots", 1},          // a BIDIRECTIONAL slot comes back BIDIRECTIONAL_CONTOUR
-    {"p09_small_part", 1},     // a CONTOUR_PARALLEL profile's strategy is not named
     {"p08_multi_level", 10},   // steps 0.5 mm off; profile, step and open pocket read as other features
     {"p12_freecad_style", 2},  // an open pocket's sense, one open pocket 0.5 mm off
 };

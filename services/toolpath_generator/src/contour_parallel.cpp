@@ -22,6 +22,7 @@ std::vector<Cut> contour_parallel_cuts(const ClearingArea& c, const PolygonSet& 
     PlanarCurve curve;
     bool hole = false;
     double depth = 0;  // how far inside the area's boundary its offset runs (< 0: outside it)
+    PolygonSet swept;
   };
   std::vector<Loop> loops;
   PolygonSet left = left_in;
@@ -62,6 +63,7 @@ std::vector<Cut> contour_parallel_cuts(const ClearingArea& c, const PolygonSet& 
       for (auto& k : candidates) {
         if (k.swept.intersected(left).area() < kNothing) continue;
         left = left.minus(k.swept);
+        k.loop.swept = std::move(k.swept);
         loops.push_back(std::move(k.loop));
       }
       if (last || nothing_left(left)) break;
@@ -76,6 +78,14 @@ std::vector<Cut> contour_parallel_cuts(const ClearingArea& c, const PolygonSet& 
     auto roomy = std::find_if(loops.begin(), loops.end(), [&](const Loop& l) { return l.curve.length() >= 2 * c.radius; });
     if (roomy != loops.end()) std::rotate(loops.begin(), roomy, roomy + 1);
   }
+  // In that order a loop may find nothing left that the loops before it do not cut (an outside
+  // profile's corner loops, before the one loop round the part that cuts them too): dropped.
+  left = left_in;
+  std::erase_if(loops, [&](const Loop& l) {
+    if (l.swept.intersected(left).area() < kNothing) return true;
+    left = left.minus(l.swept);
+    return false;
+  });
   std::vector<Cut> out;
   for (auto& l : loops) {
     const bool ccw = l.curve.signed_area() > 0;
