@@ -6,6 +6,7 @@
 #include "cutting_layers.hpp"
 #include "milling_strategy.hpp"
 #include "swept_area.hpp"
+#include "to_stepnc_strategy.hpp"
 #include "toolpath_builder.hpp"
 
 namespace fr = ncbridge::feature_recognizer;
@@ -185,4 +186,34 @@ TEST(MillingStrategy, HelixEntryThenFlatCirclesIsContourParallel) {
   EXPECT_EQ(s.strategy, fr::Strategy::ContourParallel);
   EXPECT_TRUE(s.helical);
   EXPECT_EQ(s.circle_radii.size(), 3u);
+}
+
+namespace {
+
+ncbridge::stepnc::CompositeCurve polyline_curve(std::vector<ncbridge::stepnc::CartesianPoint> points) {
+  ncbridge::stepnc::CompositeCurve c;
+  c.segments.emplace_back(ncbridge::stepnc::Polyline{std::move(points)});
+  return c;
+}
+
+}  // namespace
+
+// Two counter-clockwise loops joined by a link, far from the program's origin (p12's open pocket
+// at X63..72 Y78..88): the link's run from one loop to the next must not turn the sense the
+// level's path sweeps (it did, summed about the origin: a 9 x 10 loop read back clockwise).
+TEST(PathDirections, NestedLoopsFarFromTheOriginKeepTheirSense) {
+  // A rectangle from (x0, y0), counter-clockwise or clockwise.
+  auto loop = [](double x0, double y0, double x1, double y1, bool ccw) {
+    if (ccw) return std::vector<ncbridge::stepnc::CartesianPoint>{{x0, y0, -6}, {x1, y0, -6}, {x1, y1, -6}, {x0, y1, -6}, {x0, y0, -6}};
+    return std::vector<ncbridge::stepnc::CartesianPoint>{{x0, y0, -6}, {x0, y1, -6}, {x1, y1, -6}, {x1, y0, -6}, {x0, y0, -6}};
+  };
+  for (const bool ccw : {true, false}) {
+    const auto outer = loop(63, 81, 72, 88, ccw), inner = loop(66, 81, 69, 85, ccw);
+    std::vector<ncbridge::stepnc::CartesianPoint> level = outer;
+    level.insert(level.end(), inner.begin(), inner.end());  // the link: (63, 81) to (66, 81)
+    const auto curve = polyline_curve(level);
+    const auto d = fr::analyse_path_directions({&curve});
+    ASSERT_TRUE(d.rotation.has_value());
+    EXPECT_EQ(*d.rotation, ccw ? ncbridge::stepnc::RotDirection::Ccw : ncbridge::stepnc::RotDirection::Cw);
+  }
 }
