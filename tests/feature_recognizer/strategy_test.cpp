@@ -6,6 +6,7 @@
 #include "cutting_layers.hpp"
 #include "milling_strategy.hpp"
 #include "swept_area.hpp"
+#include "to_stepnc_strategy.hpp"
 #include "toolpath_builder.hpp"
 
 namespace fr = ncbridge::feature_recognizer;
@@ -166,4 +167,53 @@ TEST(MillingStrategy, OneLoopWithASplitSideIsAContour) {
   b.feed(52.910, 56.657, -9);
   const auto s = only_layer(b);
   EXPECT_EQ(s.strategy, fr::Strategy::Contour);
+}
+
+// The generator's milled hole: a helix down to the level at the smallest radius, then flat
+// circles from the middle out. The helix is the entry: contour parallel about one centre, still
+// helical for the feature (a hole, not a circular pocket).
+TEST(MillingStrategy, HelixEntryThenFlatCirclesIsContourParallel) {
+  ToolpathBuilder b;
+  b.workingstep(make_tool(1, ToolType::FlatEndMill, 6)).rapid(52, 50, 5).feed(52, 50, 0);
+  for (double z = 0; z > -3 + 1e-9; z -= 1.5) b.arc(48, 50, z - 0.75, 50, 50, false).arc(52, 50, z - 1.5, 50, 50, false);
+  for (double r : {2.0, 5.0, 8.0}) {
+    b.feed(50 + r, 50, -3).arc(50 - r, 50, -3, 50, 50, false).arc(50 + r, 50, -3, 50, 50, false);
+  }
+  const auto layers = layers_of(b);
+  ASSERT_FALSE(layers.empty());
+  const auto deepest = std::min_element(layers.begin(), layers.end(), [](const auto& a, const auto& c) { return a.z < c.z; });
+  const auto s = fr::analyse_strategy(*deepest);
+  EXPECT_EQ(s.strategy, fr::Strategy::ContourParallel);
+  EXPECT_TRUE(s.helical);
+  EXPECT_EQ(s.circle_radii.size(), 3u);
+}
+
+namespace {
+
+ncbridge::stepnc::CompositeCurve polyline_curve(std::vector<ncbridge::stepnc::CartesianPoint> points) {
+  ncbridge::stepnc::CompositeCurve c;
+  c.segments.emplace_back(ncbridge::stepnc::Polyline{std::move(points)});
+  return c;
+}
+
+}  // namespace
+
+// Two counter-clockwise loops joined by a link, far from the program's origin (p12's open pocket
+// at X63..72 Y78..88): the link's run from one loop to the next must not turn the sense the
+// level's path sweeps (it did, summed about the origin: a 9 x 10 loop read back clockwise).
+TEST(PathDirections, NestedLoopsFarFromTheOriginKeepTheirSense) {
+  // A rectangle from (x0, y0), counter-clockwise or clockwise.
+  auto loop = [](double x0, double y0, double x1, double y1, bool ccw) {
+    if (ccw) return std::vector<ncbridge::stepnc::CartesianPoint>{{x0, y0, -6}, {x1, y0, -6}, {x1, y1, -6}, {x0, y1, -6}, {x0, y0, -6}};
+    return std::vector<ncbridge::stepnc::CartesianPoint>{{x0, y0, -6}, {x0, y1, -6}, {x1, y1, -6}, {x1, y0, -6}, {x0, y0, -6}};
+  };
+  for (const bool ccw : {true, false}) {
+    const auto outer = loop(63, 81, 72, 88, ccw), inner = loop(66, 81, 69, 85, ccw);
+    std::vector<ncbridge::stepnc::CartesianPoint> level = outer;
+    level.insert(level.end(), inner.begin(), inner.end());  // the link: (63, 81) to (66, 81)
+    const auto curve = polyline_curve(level);
+    const auto d = fr::analyse_path_directions({&curve});
+    ASSERT_TRUE(d.rotation.has_value());
+    EXPECT_EQ(*d.rotation, ccw ? ncbridge::stepnc::RotDirection::Ccw : ncbridge::stepnc::RotDirection::Cw);
+  }
 }

@@ -193,7 +193,7 @@ bool find_circles(const Layer& layer, StrategyAnalysis& out) {
   };
   std::vector<Ring> rings;
   std::multimap<double, std::size_t> by_radius;  // ring radius -> index in `rings`
-  double total = 0, on = 0, descent = 0;
+  double total = 0, on = 0, descent = 0, flat = 0;
   for (const auto& path : layer.paths) {
     for (std::size_t i = 1; i < path.size(); ++i) {
       const auto& a = path[i - 1];
@@ -208,6 +208,7 @@ bool find_circles(const Layer& layer, StrategyAnalysis& out) {
       if (r0 < 0.05 || std::abs(r0 - r1) > tol || r0 - rm > std::max(0.05, 0.005 * r0)) continue;
       on += length;
       descent += std::max(0.0, a.z - b.z);
+      if (std::abs(a.z - b.z) < 1e-6) flat += length;
       double turn = std::atan2(b.y - c.y, b.x - c.x) - std::atan2(a.y - c.y, a.x - c.x);
       while (turn > std::numbers::pi) turn -= 2 * std::numbers::pi;
       while (turn < -std::numbers::pi) turn += 2 * std::numbers::pi;
@@ -239,6 +240,9 @@ bool find_circles(const Layer& layer, StrategyAnalysis& out) {
   out.circle_radius = out.circle_radii.back();
   out.single_circle = rings.size() == 1;
   out.helical = descent > 1e-3;
+  // A helix down to the level, then flat circles at more radii than one: the helix was the
+  // entry, the circles at the level clear it (contour parallel about one centre).
+  out.helical_entry = out.helical && rings.size() > 1 && flat > on - flat;
   return true;
 }
 
@@ -409,7 +413,8 @@ StrategyAnalysis analyse_strategy(const Layer& layer) {
   if (find_circles(layer, out)) {
     if (out.helical || out.single_circle) {
       out.strategy = out.helical ? Strategy::Helical : Strategy::Contour;
-    } else {
+    }
+    if (out.helical_entry || (!out.helical && !out.single_circle)) {
       out.strategy = Strategy::ContourParallel;
     }
     out.closed_loops = static_cast<int>(out.circle_radii.size());

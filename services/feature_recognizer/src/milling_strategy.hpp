@@ -14,6 +14,7 @@ struct StrategyAnalysis {
   // one full turn or more at each radius; links between them are short.
   std::vector<double> circle_radii;  // ascending; empty when the path is not made of circles
   bool helical = false;              // z falls along the circles (hole milling by helix)
+  bool helical_entry = false;        // ... only as the entry: flat circles at several radii follow
   bool single_circle = false;        // one radius
   Point2 circle_center;
   double circle_radius = 0;          // the largest

@@ -88,9 +88,12 @@ PathDirections analyse_path_directions(const std::vector<const stepnc::Composite
     }
   }
 
-  // Rotation: the sign of the area the level's path sweeps about +Z (shoelace over its moves).
+  // Rotation: the sign of the area the level's path sweeps about +Z (shoelace over its moves,
+  // about its first point: the path closed back to it, so that a link between two loops adds
+  // nothing however far the part lies from the origin).
   double twice_area = 0;
-  for (const auto& s : level) twice_area += s.a.x * s.b.y - s.b.x * s.a.y;
+  const auto& o = level.front().a;
+  for (const auto& s : level) twice_area += (s.a.x - o.x) * (s.b.y - o.y) - (s.b.x - o.x) * (s.a.y - o.y);
   if (std::abs(twice_area) > 1e-6) out.rotation = twice_area > 0 ? stepnc::RotDirection::Ccw : stepnc::RotDirection::Cw;
 
   // Feed direction: the direction (modulo 180 degrees, 1-degree bins) with the longest total

@@ -21,12 +21,16 @@ std::vector<Cut> contour_parallel_cuts(const ClearingArea& c, const PolygonSet& 
   struct Loop {
     PlanarCurve curve;
     bool hole = false;
+    double depth = 0;  // how far inside the area's boundary its offset runs (< 0: outside it)
+    PolygonSet swept;
   };
   std::vector<Loop> loops;
   PolygonSet left = left_in;
   // The passes last: where the stock about a part is narrower than the cutter, only their
   // band holds the loop along the part.
-  for (const PolygonSet* base : {&c.tight, &c.loose, &c.passes}) {
+  const std::pair<const PolygonSet*, double> bases[] = {
+      {&c.tight, c.radius - c.run_out}, {&c.loose, c.run_out - c.radius}, {&c.passes, -(c.radius + c.run_out)}};
+  for (const auto& [base, base_depth] : bases) {
     if (nothing_left(left)) break;
     if (base->empty()) continue;
     for (int i = 0; i < 100000; ++i) {
@@ -50,6 +54,7 @@ std::vector<Cut> contour_parallel_cuts(const ClearingArea& c, const PolygonSet& 
         Candidate k;
         k.loop.curve = curve_from_ring(ring);
         k.loop.hole = material_check::signed_area(ring) < 0;
+        k.loop.depth = base_depth + (last ? i - 0.5 : i) * stepover;
         k.swept = swept_by({k.loop.curve}, c.radius);
         k.gain = k.swept.intersected(left).area();
         candidates.push_back(std::move(k));
@@ -58,17 +63,29 @@ std::vector<Cut> contour_parallel_cuts(const ClearingArea& c, const PolygonSet& 
       for (auto& k : candidates) {
         if (k.swept.intersected(left).area() < kNothing) continue;
         left = left.minus(k.swept);
+        k.loop.swept = std::move(k.swept);
         loops.push_back(std::move(k.loop));
       }
       if (last || nothing_left(left)) break;
     }
   }
+  // The bases' loops interleave in depth (a face's tight loops lie inside its passes' loops):
+  // one monotonic order, or the recogniser reads the jumps between them as another strategy.
+  std::stable_sort(loops.begin(), loops.end(), [](const Loop& a, const Loop& b) { return a.depth < b.depth; });
   if (outward) {
     std::reverse(loops.begin(), loops.end());
     // Enter on a loop with room to ramp round (not a sliver about the middle).
     auto roomy = std::find_if(loops.begin(), loops.end(), [&](const Loop& l) { return l.curve.length() >= 2 * c.radius; });
     if (roomy != loops.end()) std::rotate(loops.begin(), roomy, roomy + 1);
   }
+  // In that order a loop may find nothing left that the loops before it do not cut (an outside
+  // profile's corner loops, before the one loop round the part that cuts them too): dropped.
+  left = left_in;
+  std::erase_if(loops, [&](const Loop& l) {
+    if (l.swept.intersected(left).area() < kNothing) return true;
+    left = left.minus(l.swept);
+    return false;
+  });
   std::vector<Cut> out;
   for (auto& l : loops) {
     const bool ccw = l.curve.signed_area() > 0;
