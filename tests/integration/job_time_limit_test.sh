@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Job time limit: with `ncbridge up --max-job-seconds 2`, a CC2 job whose recognition takes
-# longer (200,000 lines of random long cuts at random depths: about 4 s of CPU in a release
-# build, well over the limit however fast recognition gets) is stopped with an ERROR status
-# naming it, leaves no file, and every service goes on: the next job converts as
+# Job time limit: with `ncbridge up --max-job-seconds 2`, a job whose interpretation takes
+# longer (900,000 loop iterations of 24 computed parameters and a move: about 12 s of CPU in a
+# release build; recognition is bounded now, so it is the interpreter that must be slow) is
+# stopped with an ERROR status naming it, leaves no file, and every service goes on: the next job converts as
 # `ncbridge convert` converts it.
 source "$(dirname "$0")/lib.sh"
 
@@ -10,12 +10,14 @@ start up "$BIN/ncbridge" up --max-job-seconds 2
 UP_PID=$STARTED_PID
 wait_workers 1
 
-# Random strokes of a 6 mm end mill across a 200 x 150 plate, a new depth every 20 lines.
-awk 'BEGIN { srand(7); print "G21 G90 G17 G94 G54"; print "T1 M6"; print "S6000 M3"; print "G0 X0 Y0 Z5";
-             for (i = 0; i < 200000; i++) {
-               if (i % 20 == 0) { printf "G0 Z5\nG1 Z-%.3f F300\n", 0.5 + 9 * rand(); i += 2 }
-               printf "G1 X%.3f Y%.3f F1200\n", 200 * rand(), 150 * rand() }
-             print "G0 Z10"; print "M5"; print "M30" }' > "$WORK/slow.ngc"
+# A loop of computed moves, each iteration 24 parameters of trigonometry (1 call in 26 lines).
+{
+  printf 'G21 G90 G17 G94 G54\nT1 M6\nS6000 M3\nG0 X0 Y0 Z5\nG1 Z-1 F300\n#1 = 0\no100 while [#1 LT 900000]\n'
+  for k in $(seq 1 24); do
+    printf '#%d = [SIN[#1 * %d] * 40 + COS[#1 / %d] * 30 + SQRT[ABS[#1 - %d]] MOD 7]\n' $((k + 10)) $k $k $k
+  done
+  printf 'G1 X[100 + #11] Y[75 + #34] F1200\n#1 = [#1 + 1]\no100 endwhile\nG0 Z10\nM5\nM30\n'
+} > "$WORK/slow.ngc"
 printf '[{"number": 1, "name": "ENDMILL_D6", "type": "flat_end_mill", "diameter": 6, "length": 40}]\n' > "$WORK/tools.json"
 printf '{"units": "mm", "shape": "block", "min": [-10, -10, -30], "max": [210, 160, 0]}\n' > "$WORK/stock.json"
 
