@@ -1,5 +1,7 @@
 #include "html_report.hpp"
 
+#include "html_text.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -30,19 +32,7 @@ constexpr std::size_t kMaxPoints = 200000;  // toolpath points drawn at most (la
 const char* const kPalette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
                                 "#e377c2", "#17becf", "#bcbd22", "#393b79", "#637939", "#8c6d31"};
 
-std::string escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escape(std::string_view s) { return html_escape(s); }
 
 std::string json_string(std::string_view s) {
   std::string out = "\"";
@@ -55,16 +45,7 @@ std::string json_string(std::string_view s) {
   return out + "\"";
 }
 
-std::string num(double v, int decimals = 3) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0') s.pop_back();
-    if (s.back() == '.') s.pop_back();
-  }
-  return s == "-0" ? "0" : s;
-}
+std::string num(double v, int decimals = 3) { return short_number(v, decimals); }
 
 std::string lower(std::string_view s) {
   std::string out(s);

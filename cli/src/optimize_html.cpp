@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "errors.hpp"
+#include "html_text.hpp"
 
 namespace ncbridge::cli {
 
@@ -18,30 +19,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kPanelPx = 640;            // each drawing's width
 constexpr std::size_t kMaxDots = 40000;     // vertex dots drawn at most per side
 
-std::string escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escape(std::string_view s) { return html_escape(s); }
 
-std::string num(double v, int decimals = 3) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0') s.pop_back();
-    if (s.back() == '.') s.pop_back();
-  }
-  return s == "-0" ? "0" : s;
-}
+std::string num(double v, int decimals = 3) { return short_number(v, decimals); }
 
 // The layer a motion lies in: its Z in 0.01 mm steps, when it stays at that Z and moves in XY.
 std::optional<long> layer_key(const to::PathPiece& p) {
