@@ -73,7 +73,8 @@ const std::vector<PartProgram> kPrograms = {
 // test in seconds).
 double grid_cell(const ncbridge::setup::Stock& stock, const fs::path& tools) {
   double smallest = 1e9;
-  for (const auto& t : ncbridge::setup::read_tool_list(tools).tools()) {
+  const auto list = ncbridge::setup::read_tool_list(tools);
+  for (const auto& t : list.tools()) {
     if (t.diameter > 0) smallest = std::min(smallest, t.diameter);
   }
   return std::max({std::sqrt(stock.size(0) * stock.size(1) / 40000.0), smallest / 8, 0.1});
