@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "cli_test_files.hpp"
 #include "support/run_program.hpp"
 
 namespace ncbridge::cli {
@@ -27,19 +28,9 @@ using ncbridge::testing::RunOptions;
 const fs::path kPlate = fs::path(NCBRIDGE_SOURCE_DIR) / "examples" / "plate";
 const std::string kEpoch = "SOURCE_DATE_EPOCH=1700000000";
 
-fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::path(NCBRIDGE_BINARY_DIR) / "test_output" / "cli" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_directory(const std::string& name) { return ncbridge::testing::fresh_test_directory("cli_convert_outputs", name); }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using ncbridge::testing::slurp;
 
 void put(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 

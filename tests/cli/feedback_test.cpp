@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "cli_test_files.hpp"
 #include "feedback.hpp"
 #include "support/run_program.hpp"
 
@@ -28,19 +29,9 @@ using ncbridge::testing::ProgramRun;
 
 const fs::path kPlate = fs::path(NCBRIDGE_SOURCE_DIR) / "examples" / "plate";
 
-fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::path(NCBRIDGE_BINARY_DIR) / "test_output" / "cli" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_directory(const std::string& name) { return ncbridge::testing::fresh_test_directory("cli_feedback", name); }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using ncbridge::testing::slurp;
 
 // Standard error of this process, captured into a file while alive.
 class CapturedStderr {

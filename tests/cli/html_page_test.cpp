@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_test_files.hpp"
 #include "support/run_program.hpp"
 
 namespace ncbridge::cli {
@@ -22,19 +23,9 @@ using ncbridge::testing::ProgramRun;
 const fs::path kPlate = fs::path(NCBRIDGE_SOURCE_DIR) / "examples" / "plate";
 const fs::path kPart = fs::path(NCBRIDGE_SOURCE_DIR) / "examples" / "part";
 
-fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::path(NCBRIDGE_BINARY_DIR) / "test_output" / "cli_html" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_directory(const std::string& name) { return ncbridge::testing::fresh_test_directory("cli_html", name); }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using ncbridge::testing::slurp;
 
 ProgramRun ncbridge(std::vector<std::string> args) {
   args.insert(args.begin(), NCBRIDGE_EXECUTABLE);

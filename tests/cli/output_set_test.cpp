@@ -17,6 +17,7 @@
 #include <string>
 #include <thread>
 
+#include "cli_test_files.hpp"
 #include "errors.hpp"
 #include "output_files.hpp"
 
@@ -25,19 +26,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::path(NCBRIDGE_BINARY_DIR) / "test_output" / "cli" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_directory(const std::string& name) { return ncbridge::testing::fresh_test_directory("cli_output_set", name); }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using ncbridge::testing::slurp;
 
 void put(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 

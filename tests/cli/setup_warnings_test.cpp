@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_test_files.hpp"
 #include "support/run_program.hpp"
 
 namespace ncbridge::cli {
@@ -22,19 +23,9 @@ const fs::path kPlate = fs::path(NCBRIDGE_SOURCE_DIR) / "examples" / "plate";
 const fs::path kCam = fs::path(NCBRIDGE_SHARED_DIR) / "corpus" / "cam";
 const char* const kSetupKinds[] = {"feed", "outside_stock", "security_plane", "units", "tool_type"};
 
-fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::path(NCBRIDGE_BINARY_DIR) / "test_output" / "cli" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_directory(const std::string& name) { return ncbridge::testing::fresh_test_directory("cli_setup_warnings", name); }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using ncbridge::testing::slurp;
 
 ProgramRun ncbridge(std::vector<std::string> args) {
   args.insert(args.begin(), NCBRIDGE_EXECUTABLE);
